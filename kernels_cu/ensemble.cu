@@ -1,0 +1,34 @@
+/* arnoldweb CUDA entry points: thin kernels over lib/device.
+ * Compiled at run time by NVRTC with the same defines as the OpenCL kernels:
+ * -DAW_FEATURES=<mask> -DAW_STAGES=<n> -DAW_KICK_FIRST=<0|1> [-DAW_FLOAT]
+ * [-DAW_NATIVE_MATH]. */
+#define AW_LOCAL
+#define AW_BARRIER() __syncthreads()
+#include "aw_ensemble.h"
+#include "aw_reduce.h"
+
+extern "C" __global__ void aw_ensemble(aw_u64 chunk_first, aw_u64 chunk_end, const real* rp,
+                                       const aw_i64* ip, aw_u32* map, aw_u32* counters,
+                                       real* initial_r, real* final_r, aw_i64* final_i,
+                                       real* group_stats) {
+  extern __shared__ unsigned char aw_shared[];
+  real* scratch = (real*)aw_shared;
+  aw_u64 first = chunk_first + ((aw_u64)blockIdx.x * blockDim.x + threadIdx.x);
+  real emax = 0, esum = 0;
+  if (first < chunk_end) {
+    aw_outputs out = {map, counters, initial_r, final_r, final_i};
+    aw_ensemble_item(AW_FEATURES, AW_STAGES, AW_KICK_FIRST, first, chunk_end, chunk_first, rp,
+                     ip, out, &emax, &esum);
+  }
+  aw_group_reduce(scratch, (int)threadIdx.x, (int)blockDim.x, blockIdx.x, emax, esum,
+                  group_stats);
+}
+
+/* total[i] += part[i]; part[i] = 0: 32-bit chunk counts into 64-bit totals. */
+extern "C" __global__ void aw_fold(aw_u64* total, aw_u32* part, aw_u64 n) {
+  aw_u64 i = (aw_u64)blockIdx.x * blockDim.x + threadIdx.x;
+  if (i < n) {
+    total[i] += part[i];
+    part[i] = 0;
+  }
+}

@@ -1,0 +1,154 @@
+/* arnoldweb portable device core: the dialect prelude.
+ *
+ * Every file in lib/device/ is valid C++17, OpenCL C 1.2 and CUDA C++ at once.
+ * This header is the only place that knows which of the three it is compiled as.
+ * It defines qualifiers, the scalar type `real`, the lane type `lreal`
+ * (a vector of AW_LANES reals in OpenCL, a scalar elsewhere) and the handful of
+ * operations the core may use: + - * / sqrt, explicit fma, and select.
+ *
+ * Build-time switches (set with -D by the host or by the C++ backend):
+ *   AW_FLOAT        compute in float instead of double
+ *   AW_NATIVE_MATH  use the vendor's sin/cos instead of the portable polynomials
+ *   AW_LANES        trajectories per work-item (OpenCL only: 1, 2, 4, 8, 16)
+ */
+#ifndef AW_DIALECT_H
+#define AW_DIALECT_H
+
+#if defined(__OPENCL_VERSION__)
+/* ------------------------------------------------------------ OpenCL C 1.2 */
+#define AW_OPENCL 1
+#pragma OPENCL FP_CONTRACT OFF
+#ifndef AW_FLOAT
+#pragma OPENCL EXTENSION cl_khr_fp64 : enable
+#endif
+#define AW_FN static inline
+#define AW_GLOBAL __global
+#define AW_CONSTANT __constant
+typedef uint aw_u32;
+typedef ulong aw_u64;
+typedef long aw_i64;
+
+#elif defined(__CUDACC__)
+/* ------------------------------------------------------------- CUDA C++ */
+#define AW_CUDA 1
+#if defined(__CUDACC_RTC__)
+/* NVRTC has no C library headers; Random123 needs these names. */
+typedef unsigned char uint8_t;
+typedef unsigned int uint32_t;
+typedef unsigned long long uint64_t;
+#define UINT64_C(x) x##ULL
+#define R123_USE_SSE 0
+#define R123_FORCE_INLINE(decl) decl
+#define R123_USE_PHILOX_64BIT 0
+#else
+#include <stdint.h>
+#endif
+#define AW_FN static __device__ __forceinline__
+#define AW_GLOBAL
+#define AW_CONSTANT const
+typedef unsigned int aw_u32;
+typedef unsigned long long aw_u64;
+typedef long long aw_i64;
+
+#else
+/* ------------------------------------------------------------ host C++17 */
+#define AW_CPP 1
+#include <cmath>
+#include <cstdint>
+#if defined(__GNUC__)
+#define AW_FN static inline __attribute__((always_inline))
+#else
+#define AW_FN static inline
+#endif
+#define AW_GLOBAL
+#define AW_CONSTANT const
+typedef std::uint32_t aw_u32;
+typedef std::uint64_t aw_u64;
+typedef std::int64_t aw_i64;
+#endif
+
+/* ------------------------------------------------------------ precision */
+#ifdef AW_FLOAT
+typedef float real;
+#define AW_R(x) x##f
+#else
+typedef double real;
+#define AW_R(x) x
+#endif
+
+/* ------------------------------------------------------------ lanes */
+#ifndef AW_LANES
+#define AW_LANES 1
+#endif
+#if AW_LANES != 1 && !defined(AW_OPENCL)
+#error "AW_LANES > 1 is only available in OpenCL C (explicit vector types)"
+#endif
+
+#define AW_CAT_(a, b) a##b
+#define AW_CAT(a, b) AW_CAT_(a, b)
+
+#if AW_LANES == 1
+typedef real lreal; /* one trajectory per work-item */
+typedef aw_i64 lint;
+/* select(a, b, c): c ? b : a, as OpenCL's select */
+#define AW_SELECT(a, b, c) ((c) ? (b) : (a))
+#define AW_LOAD_LANES(arr) ((arr)[0])
+#define AW_STORE_LANES(v, arr) ((arr)[0] = (v))
+#define AW_LANE_TO_INT(x) ((lint)(x))
+#define AW_INT_TO_LANE(x) ((lreal)(x))
+#define AW_ALL(c) (c)
+#else
+#ifdef AW_FLOAT
+typedef AW_CAT(float, AW_LANES) lreal;
+#else
+typedef AW_CAT(double, AW_LANES) lreal;
+#endif
+typedef AW_CAT(long, AW_LANES) lint;
+#define AW_SELECT(a, b, c) select((a), (b), (c))
+#define AW_LOAD_LANES(arr) AW_CAT(vload, AW_LANES)(0, (arr))
+#define AW_STORE_LANES(v, arr) AW_CAT(vstore, AW_LANES)((v), 0, (arr))
+#define AW_LANE_TO_INT(x) AW_CAT(convert_long, AW_LANES)(x)
+#ifdef AW_FLOAT
+#define AW_INT_TO_LANE(x) AW_CAT(convert_float, AW_LANES)(x)
+#else
+#define AW_INT_TO_LANE(x) AW_CAT(convert_double, AW_LANES)(x)
+#endif
+#define AW_ALL(c) all(c)
+#endif
+/* a scalar broadcast to every lane (OpenCL's builtins do not mix the two) */
+#define AW_LSPLAT(x) ((lreal)(x))
+
+/* ------------------------------------------------------------ arithmetic
+ * Only explicit fma: FP contraction is off in every dialect, so a*b+c is two
+ * roundings everywhere and fma(a,b,c) is one rounding everywhere. */
+#if defined(AW_CPP)
+#define AW_FMA(a, b, c) std::fma((a), (b), (c))
+#define AW_SQRT(x) std::sqrt(x)
+#define AW_FABS(x) std::fabs(x)
+#define AW_ISFINITE(x) std::isfinite(x)
+#define AW_FREXP(x, e) std::frexp((x), (e))
+#elif defined(AW_CUDA) && defined(AW_FLOAT)
+#define AW_FMA(a, b, c) fmaf((a), (b), (c))
+#define AW_SQRT(x) sqrtf(x)
+#define AW_FABS(x) fabsf(x)
+#define AW_ISFINITE(x) isfinite(x)
+#define AW_FREXP(x, e) frexpf((x), (e))
+#else
+#define AW_FMA(a, b, c) fma((a), (b), (c))
+#define AW_SQRT(x) sqrt(x)
+#define AW_FABS(x) fabs(x)
+#define AW_ISFINITE(x) isfinite(x)
+#define AW_FREXP(x, e) frexp((x), (e))
+#endif
+
+/* rint() without a library call: adding and subtracting 1.5 * 2^52 (2^23 in
+ * float) rounds to the nearest integer, ties to even, for |x| < 2^51 (2^22).
+ * Only two IEEE additions, so identical everywhere and vectorisable. */
+#ifdef AW_FLOAT
+#define AW_ROUND_MAGIC AW_R(12582912.0)
+#else
+#define AW_ROUND_MAGIC 6755399441055744.0
+#endif
+#define AW_RINT_SMALL(x) (((x) + AW_ROUND_MAGIC) - AW_ROUND_MAGIC)
+
+#endif /* AW_DIALECT_H */

@@ -1,0 +1,165 @@
+/* arnoldweb portable device core: elementary functions.
+ *
+ * Angles are carried in turns (u = x / 2pi), so the argument reduction of
+ * sin(2 pi u) and cos(2 pi u) is exact: f = 4u - rint(4u) in [-1/2, 1/2] is
+ * computed without rounding, and only r = f * pi/2 rounds once (double-double
+ * pi/2 through one fma). The kernels on [-pi/4, pi/4] are the fdlibm minimax
+ * polynomials (double) and the Cephes single-precision ones (float), evaluated
+ * by Horner with explicit fma in a fixed order: identical bits on every
+ * backend. Measured accuracy is in docs/numerics.md (tests/test_math.cpp).
+ *
+ * aw_atan2 is scalar (used once per trajectory and window for binning); it
+ * too uses only + - * / and fma, so pixel indices agree bit for bit.
+ */
+#ifndef AW_MATH_H
+#define AW_MATH_H
+
+#include "aw_dialect.h"
+
+#ifdef AW_FLOAT
+#define AW_PIO2_HI 1.5707963705062866f
+#define AW_PIO2_LO -4.371138828673793e-08f
+#else
+#define AW_PIO2_HI 1.5707963267948966
+#define AW_PIO2_LO 6.123233995736766e-17
+#endif
+
+/* Quadrant bookkeeping shared by both precisions: given k = rint(4u) and the
+ * kernel values sr = sin(r), cr = cos(r), return sin and cos of k pi/2 + r. */
+#define AW_QUADRANT_SELECT(k, sr, cr, s, c)                                        \
+  do {                                                                           \
+    lreal aw_m_ = (k) - AW_R(4.0) * AW_RINT_SMALL((k) * AW_R(0.25)); /* -2..2 */ \
+    lreal aw_ss_ = AW_SELECT((sr), (cr), AW_FABS(aw_m_) == AW_R(1.0));           \
+    lreal aw_cc_ = AW_SELECT((cr), (sr), AW_FABS(aw_m_) == AW_R(1.0));           \
+    *(s) = AW_SELECT(aw_ss_, -aw_ss_, (aw_m_ < AW_R(-0.5)) | (aw_m_ > AW_R(1.5))); \
+    *(c) = AW_SELECT(aw_cc_, -aw_cc_, (aw_m_ > AW_R(0.5)) | (aw_m_ < AW_R(-1.5))); \
+  } while (0)
+
+#if defined(AW_NATIVE_MATH)
+/* The vendor's functions: faster on some devices, not bitwise portable. */
+AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) {
+#if defined(AW_OPENCL)
+  *s = sinpi(AW_R(2.0) * u);
+  *c = cospi(AW_R(2.0) * u);
+#elif defined(AW_CUDA) && defined(AW_FLOAT)
+  sincospif(AW_R(2.0) * u, s, c);
+#elif defined(AW_CUDA)
+  sincospi(AW_R(2.0) * u, s, c);
+#else
+  const real twopi = AW_R(6.283185307179586);
+  *s = std::sin(twopi * u);
+  *c = std::cos(twopi * u);
+#endif
+}
+#else
+
+AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) {
+  lreal x4 = AW_R(4.0) * u;            /* exact */
+  lreal k = AW_RINT_SMALL(x4);         /* nearest integer, ties to even */
+  lreal f = x4 - k;                    /* exact, in [-1/2, 1/2] */
+  lreal r = AW_FMA(f, AW_PIO2_HI, f * AW_PIO2_LO); /* f * pi/2, one rounding */
+  lreal z = r * r;
+#ifdef AW_FLOAT
+  /* Cephes sinf/cosf minimax kernels on [-pi/4, pi/4] */
+  lreal ps = AW_FMA(z, AW_R(-1.9515295891e-4), AW_R(8.3321608736e-3));
+  ps = AW_FMA(z, ps, AW_R(-1.6666654611e-1));
+  lreal sr = AW_FMA(r * z, ps, r);
+  lreal pc = AW_FMA(z, AW_R(2.443315711809948e-5), AW_R(-1.388731625493765e-3));
+  pc = AW_FMA(z, pc, AW_R(4.166664568298827e-2));
+  lreal cr = AW_FMA(z * z, pc, AW_FMA(AW_R(-0.5), z, AW_R(1.0)));
+#else
+  /* fdlibm __kernel_sin / __kernel_cos on [-pi/4, pi/4] */
+  lreal ps = AW_FMA(z, 1.58969099521155010221e-10, -2.50507602534068634195e-08);
+  ps = AW_FMA(z, ps, 2.75573137070700676789e-06);
+  ps = AW_FMA(z, ps, -1.98412698298579493134e-04);
+  ps = AW_FMA(z, ps, 8.33333333332248946124e-03);
+  ps = AW_FMA(z, ps, -1.66666666666666324348e-01);
+  lreal sr = AW_FMA(r * z, ps, r);
+  lreal pc = AW_FMA(z, -1.13596475577881948265e-11, 2.08757232129817482790e-09);
+  pc = AW_FMA(z, pc, -2.75573143513906633035e-07);
+  pc = AW_FMA(z, pc, 2.48015872894767294178e-05);
+  pc = AW_FMA(z, pc, -1.38888888888741095749e-03);
+  pc = AW_FMA(z, pc, 4.16666666666666019037e-02);
+  lreal hz = 0.5 * z;
+  lreal w = 1.0 - hz;
+  lreal cr = w + AW_FMA(z * z, pc, (1.0 - w) - hz);
+#endif
+  AW_QUADRANT_SELECT(k, sr, cr, s, c);
+}
+#endif /* AW_NATIVE_MATH */
+
+/* ------------------------------------------------------------ scalar atan2 */
+
+/* atan(t) for 0 <= t <= 1. */
+AW_FN real aw_atan_unit(real t) {
+#ifdef AW_FLOAT
+  /* Cephes atanf: reduce t > tan(pi/8) by atan(t) = pi/4 + atan((t-1)/(t+1)) */
+  real base = 0.0f;
+  if (t > 0.41421356237309504880f) {
+    t = (t - 1.0f) / (t + 1.0f);
+    base = 0.78539816339744830962f;
+  }
+  real z = t * t;
+  real p = AW_FMA(z, 8.05374449538e-2f, -1.38776856032e-1f);
+  p = AW_FMA(z, p, 1.99777106478e-1f);
+  p = AW_FMA(z, p, -3.33329491539e-1f);
+  return base + AW_FMA(z * t, p, t);
+#else
+  /* fdlibm s_atan.c structure for the arguments that occur here */
+  real hi = 0.0, lo = 0.0;
+  int reduced = 1;
+  if (t < 0.4375) {
+    reduced = 0;
+  } else if (t < 0.6875) {
+    t = (2.0 * t - 1.0) / (2.0 + t);
+    hi = 4.63647609000806093515e-01;
+    lo = 2.26987774529616870924e-17;
+  } else {
+    t = (t - 1.0) / (t + 1.0);
+    hi = 7.85398163397448278999e-01;
+    lo = 3.06161699786838301793e-17;
+  }
+  real z = t * t;
+  real w = z * z;
+  real s1 = AW_FMA(w, 1.62858201153657823623e-02, 4.97687799461593236017e-02);
+  s1 = AW_FMA(w, s1, 6.66107313738753120669e-02);
+  s1 = AW_FMA(w, s1, 9.09088713343650656196e-02);
+  s1 = AW_FMA(w, s1, 1.42857142725034663711e-01);
+  s1 = AW_FMA(w, s1, 3.33333333333329318027e-01);
+  s1 = z * s1;
+  real s2 = AW_FMA(w, -3.65315727442169155270e-02, -5.83357013379057348645e-02);
+  s2 = AW_FMA(w, s2, -7.69187620504482999495e-02);
+  s2 = AW_FMA(w, s2, -1.11111104054623557880e-01);
+  s2 = AW_FMA(w, s2, -1.99999999998764832476e-01);
+  s2 = w * s2;
+  if (!reduced) return t - t * (s1 + s2);
+  return hi - ((t * (s1 + s2) - lo) - t);
+#endif
+}
+
+/* atan2(y, x) in (-pi, pi]; atan2(0, 0) = 0. */
+AW_FN real aw_atan2(real y, real x) {
+  real ax = AW_FABS(x), ay = AW_FABS(y);
+  real a;
+  if (ax == AW_R(0.0) && ay == AW_R(0.0)) return AW_R(0.0);
+  if (ay <= ax) {
+    a = aw_atan_unit(ay / ax);
+  } else {
+    /* pi/2 - atan(ax/ay), with pi/2 in two parts */
+#ifdef AW_FLOAT
+    a = 1.5707963705062866f - (aw_atan_unit(ax / ay) + 4.371138828673793e-08f);
+#else
+    a = 1.5707963267948966 - (aw_atan_unit(ax / ay) - 6.123233995736766e-17);
+#endif
+  }
+  if (x < AW_R(0.0)) {
+#ifdef AW_FLOAT
+    a = 3.1415927410125732f - (a + 8.742277657347586e-08f);
+#else
+    a = 3.141592653589793 - (a - 1.2246467991473532e-16);
+#endif
+  }
+  return (y < AW_R(0.0)) ? -a : a;
+}
+
+#endif /* AW_MATH_H */

@@ -1,0 +1,12 @@
+// arnoldweb: the whole public API.
+#pragma once
+
+#include "arnoldweb/device.hpp"
+#include "arnoldweb/errors.hpp"
+#include "arnoldweb/methods.hpp"
+#include "arnoldweb/output.hpp"
+#include "arnoldweb/plan.hpp"
+#include "arnoldweb/result.hpp"
+#include "arnoldweb/run.hpp"
+#include "arnoldweb/scene.hpp"
+#include "arnoldweb/version.hpp"

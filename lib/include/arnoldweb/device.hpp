@@ -1,0 +1,71 @@
+// arnoldweb: devices and the one host interface every backend implements.
+// Backends: "cpu" (the device core compiled as C++, all cores), "opencl:N"
+// (every OpenCL device, PoCL on CPUs), "cuda:N" (NVIDIA GPUs, where built).
+// No OpenCL or CUDA header leaks out of this file.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "arnoldweb/plan.hpp"
+
+namespace arnoldweb {
+
+struct DeviceInfo {
+  std::string id;        // "cpu", "opencl:0", "cuda:0"
+  std::string backend;   // "cpu", "opencl", "cuda"
+  std::string name;      // e.g. "NVIDIA H200", "pthread-skylake-avx512-..."
+  std::string vendor;
+  std::string version;   // driver / platform version
+  bool fp64 = true;
+  unsigned compute_units = 0;
+  std::uint64_t memory = 0;  // bytes of global memory
+  bool is_cpu = false;
+};
+
+// Every device present, cpu first. Never throws: backends that cannot be
+// queried (no OpenCL platform, no CUDA driver) contribute nothing, and
+// backend_problems() says why.
+std::vector<DeviceInfo> list_devices();
+std::vector<std::string> backend_problems();
+
+// What one chunk of trajectories produced (the histogram stays on the device
+// until read_map()).
+struct ChunkOutput {
+  std::vector<std::uint32_t> counters;  // AW_C_COUNT
+  std::vector<double> group_stats;      // (max, sum) pairs of max|dE|
+  std::vector<double> initial_r;        // AW_STATE_REALS per trajectory, when asked
+  std::vector<double> final_r;          // AW_STATE_REALS per trajectory, when asked
+  std::vector<std::int64_t> final_i;    // AW_STATE_INTS per trajectory, when asked
+};
+
+class Backend {
+ public:
+  virtual ~Backend() = default;
+  virtual const DeviceInfo& info() const = 0;
+  // Compile the kernel for the plan's configuration (cached) and allocate the
+  // buffers for chunks of up to max_chunk trajectories. Throws DeviceError,
+  // BuildError.
+  virtual void prepare(const Plan& plan, std::uint64_t max_chunk) = 0;
+  // Trajectories [first, first + count), count <= max_chunk. Blocks until done.
+  virtual void run_chunk(std::uint64_t first, std::uint64_t count, ChunkOutput& out) = 0;
+  // The velocity map accumulated over all chunks since prepare().
+  virtual std::vector<std::uint64_t> read_map() = 0;
+  // Trajectories per launch that keep the device busy (a lower bound for chunks).
+  virtual std::uint64_t preferred_chunk() const = 0;
+  // Compiler options / variant used, for the summary.
+  virtual std::string kernel_description() const = 0;
+};
+
+// Open a device by id: "cpu", "opencl:N", "cuda:N", or "auto" (the first GPU,
+// else the first OpenCL device, else cpu). The environment variable
+// ARNOLDWEB_DEVICE, when set, replaces "auto". Throws DeviceError with the
+// list of devices and, where a platform is missing, how to install one.
+std::unique_ptr<Backend> open_backend(const std::string& id);
+
+// The id "auto" resolves to on this machine.
+std::string default_device_id();
+
+}  // namespace arnoldweb

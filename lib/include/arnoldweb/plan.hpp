@@ -1,0 +1,78 @@
+// arnoldweb: a plan is a validated scene turned into what the kernels need:
+// the feature mask, the step schedule, the parameter buffers.
+// Data flows one way: Scene -> Plan -> backend -> Result -> writers.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "arnoldweb/methods.hpp"
+#include "arnoldweb/scene.hpp"
+
+namespace arnoldweb {
+
+// What a kernel is compiled for. Two plans with equal KernelConfig share a
+// compiled program.
+struct KernelConfig {
+  Precision precision = Precision::Double;
+  MathMode math = MathMode::Portable;
+  std::uint32_t features = 0;  // AW_F_* bits (lib/device/aw_params.h)
+  int stages = 0;
+  bool kick_first = true;
+  int initial = 0;  // AW_INITIAL_*
+
+  // -D options for the OpenCL and CUDA compilers (without lanes).
+  std::string defines() const;
+  bool operator==(const KernelConfig& o) const;
+};
+
+// Names of the effects in a feature mask, e.g. {"velocity_map", "energy_error"}.
+std::vector<std::string> feature_names(std::uint32_t features);
+
+// The step-size guard: h k |p|max against the splitting resonance at pi.
+struct StepGuard {
+  double p_max = 0;     // sqrt(2 (E + 2)): largest momentum on the shell
+  double value = 0;     // h k |p|max with h in time units (step * 2 pi), k = 2
+  double limit = 0;     // pi: refuse at or above
+  double advised = 0;   // pi / 2: warn above
+  double safe_step = 0; // largest step (in T) dividing the schedule with value <= advised
+  bool refused() const { return value >= limit; }
+  bool warned() const { return value > advised; }
+};
+StepGuard step_guard(double energy, double step, double average, double energy_every);
+
+struct Plan {
+  Scene scene;
+  Method method;
+  KernelConfig kernel;
+
+  double step = 0;                      // in T
+  std::int64_t steps_per_segment = 0;   // steps between energy samples
+  std::int64_t segments_per_window = 0; // samples per averaging window
+  std::int64_t windows = 0;             // averaging windows per trajectory
+  std::int64_t steps_per_trajectory = 0;
+  double trajectory_steps = 0;          // trajectories * steps_per_trajectory
+  double force_evaluations = 0;         // trajectory_steps * stages
+
+  std::uint64_t npix = 0;               // 12 nside^2 (0 without a velocity map)
+  double accessible_fraction = 1;       // of the torus, for the initial states
+  StepGuard guard;
+  std::vector<std::string> warnings;
+
+  // Kernel parameter buffers (layout: lib/device/aw_params.h).
+  std::vector<double> rp;
+  std::vector<std::int64_t> ip;
+
+  std::vector<std::string> effects() const { return feature_names(kernel.features); }
+};
+
+// Validate the scene as a whole and build the plan. Throws SceneError for
+// values that are wrong together (average not a multiple of the step, ...),
+// naming the key and its position.
+Plan make_plan(const Scene& scene);
+
+// Fraction of the torus where V(X) < E (Monte Carlo with a fixed seed).
+double accessible_fraction(double energy);
+
+}  // namespace arnoldweb

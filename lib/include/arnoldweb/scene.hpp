@@ -1,0 +1,90 @@
+// arnoldweb: a scene is one experiment, written in TOML (docs/scenes.md).
+// load_scene() validates every key and value and throws SceneError naming the
+// file, line, column and key of the first problem.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace arnoldweb {
+
+enum class Precision { Double, Float };
+enum class MathMode { Portable, Native };
+
+const char* to_string(Precision p);
+const char* to_string(MathMode m);
+
+// Where a key was written (for messages about values that are only found to be
+// wrong later, e.g. by the planner). line 0: not in the file (a default).
+struct SourcePos {
+  int line = 0;
+  int column = 0;
+};
+
+struct Scene {
+  // [model]
+  double energy = 15.0;  // E; effective perturbation 2/E
+
+  // [ensemble]
+  std::uint64_t trajectories = 100000;
+  std::uint64_t seed = 1;
+  std::string initial = "shell";
+  std::uint64_t chunk = 0;  // trajectories per launch; 0 = chosen by the runner
+
+  // [integrator]
+  std::string method = "yoshida6a";
+  double step = 0.01;         // in units of T = 2 pi; ignored when step_auto
+  bool step_auto = false;     // integrator.step = "auto"
+  double tolerance = 1e-8;    // target max |dE| for "auto"
+  Precision precision = Precision::Double;
+  MathMode math = MathMode::Portable;
+  bool allow_unsafe_step = false;  // override of the step-size guard
+
+  // [run]
+  double average = 50.0;   // averaging window dt, in T
+  double duration = 50.0;  // propagation time t_p, in T
+  std::string device = "auto";
+
+  // [observe]
+  bool velocity_map = true;
+  int nside = 64;
+  bool energy_error = true;
+  double energy_every = 1.0;  // sample interval of |dE|, in T
+  std::optional<double> max_energy_error;
+  bool initial_states = false;
+  bool final_states = false;
+
+  // [output]
+  std::string output_dir = "out";
+  bool images = true;
+
+  // Provenance
+  std::string file;                        // path it was read from ("<string>" if none)
+  std::map<std::string, SourcePos> where;  // dotted key -> position in the file
+  std::vector<std::string> overrides;      // --set key=value, in order
+
+  // The scene as run, as TOML (every key, defaults included).
+  std::string to_toml() const;
+  // Position of a dotted key, for messages ({0, 0} for defaults).
+  SourcePos pos(const std::string& key) const;
+};
+
+// Read and validate a scene file; apply `overrides` ("key=value", value in TOML
+// syntax or a bare string) on top. Throws SceneError.
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// The same from text (file is the name used in messages).
+Scene parse_scene(const std::string& text, const std::string& file,
+                  const std::vector<std::string>& overrides = {});
+
+// All keys a scene may contain, with their type and allowed values, for docs
+// and `arnoldweb check`.
+struct SceneKey {
+  std::string key, type, allowed, default_value, meaning;
+};
+const std::vector<SceneKey>& scene_keys();
+
+}  // namespace arnoldweb

@@ -1,0 +1,17 @@
+// arnoldweb: cpu kernel variant "double_native" (see cpu_kernel_body.inc).
+#include <Random123/philox.h>  // variant-independent types stay outside the namespace
+
+#include <cmath>
+#include <cstdint>
+
+#include "backends/cpu/cpu_kernel.hpp"
+
+#define AW_NATIVE_MATH 1
+namespace arnoldweb::detail {
+namespace cpu_double_native {
+#include "backends/cpu/cpu_kernel_body.inc"
+}  // namespace cpu_double_native
+
+void cpu_chunk_double_native(const CpuChunk& c) { cpu_double_native::run_chunk(c); }
+
+}  // namespace arnoldweb::detail

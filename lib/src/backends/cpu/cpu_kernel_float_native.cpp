@@ -1,0 +1,18 @@
+// arnoldweb: cpu kernel variant "float_native" (see cpu_kernel_body.inc).
+#include <Random123/philox.h>  // variant-independent types stay outside the namespace
+
+#include <cmath>
+#include <cstdint>
+
+#include "backends/cpu/cpu_kernel.hpp"
+
+#define AW_FLOAT 1
+#define AW_NATIVE_MATH 1
+namespace arnoldweb::detail {
+namespace cpu_float_native {
+#include "backends/cpu/cpu_kernel_body.inc"
+}  // namespace cpu_float_native
+
+void cpu_chunk_float_native(const CpuChunk& c) { cpu_float_native::run_chunk(c); }
+
+}  // namespace arnoldweb::detail

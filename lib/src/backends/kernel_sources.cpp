@@ -1,0 +1,89 @@
+// arnoldweb: access to the embedded kernel sources.
+#include "backends/kernel_sources.hpp"
+
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+
+namespace arnoldweb::detail {
+namespace {
+
+std::string dirname_of(const std::string& name) {
+  auto p = name.rfind('/');
+  return p == std::string::npos ? std::string() : name.substr(0, p + 1);
+}
+
+// The embedded name an include refers to, or "" if it is not embedded.
+std::string resolve(const std::string& target, const std::string& from) {
+  for (const std::string& candidate :
+       {dirname_of(from) + target, target, "Random123/" + target}) {
+    for (const auto& [name, text] : embedded_kernel_sources())
+      if (candidate == name) return candidate;
+  }
+  return "";
+}
+
+void flatten_into(const std::string& name, std::ostringstream& out, int depth) {
+  if (depth > 32) throw std::runtime_error("kernel sources: include nesting too deep at " + name);
+  static const std::regex include_re(R"(^\s*#\s*include\s*[<"]([^>"]+)[>"].*$)");
+  std::istringstream in{std::string(embedded_file(name))};
+  std::string line;
+  out << "#line 1 \"" << name << "\"\n";
+  int lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    std::smatch m;
+    if (std::regex_match(line, m, include_re)) {
+      const std::string target = resolve(m[1].str(), name);
+      if (!target.empty()) {
+        flatten_into(target, out, depth + 1);
+        out << "#line " << lineno + 1 << " \"" << name << "\"\n";
+        continue;
+      }
+    }
+    out << line << '\n';
+  }
+}
+
+}  // namespace
+
+std::string_view embedded_file(const std::string& name) {
+  for (const auto& [n, text] : embedded_kernel_sources())
+    if (name == n) return text;
+  throw std::out_of_range("no embedded kernel source named " + name);
+}
+
+std::string flatten_source(const std::string& name) {
+  std::ostringstream out;
+  flatten_into(name, out, 0);
+  return out.str();
+}
+
+std::vector<std::pair<std::string, std::string>> nvrtc_headers() {
+  std::vector<std::pair<std::string, std::string>> h;
+  for (const auto& [name, text] : embedded_kernel_sources()) {
+    std::string n = name;
+    h.emplace_back(n, std::string(text));
+    // Random123 includes its headers relative to their own directory.
+    if (n.rfind("Random123/", 0) == 0) {
+      std::string rel = n.substr(10);
+      h.emplace_back(rel, std::string(text));
+      auto slash = rel.find('/');
+      if (slash != std::string::npos) h.emplace_back(rel.substr(slash + 1), std::string(text));
+    }
+  }
+  const char* empty = "";
+  h.emplace_back("stddef.h", "typedef unsigned long size_t; typedef long ptrdiff_t;");
+  h.emplace_back("algorithm", empty);
+  h.emplace_back("stdexcept", empty);
+  h.emplace_back("iterator", empty);
+  h.emplace_back("limits", empty);
+  h.emplace_back("iostream",
+                 "namespace std {\n"
+                 "struct ostream { template <class T> ostream& operator<<(const T&) { return *this; } };\n"
+                 "struct istream { template <class T> istream& operator>>(T&) { return *this; } };\n"
+                 "}\n");
+  return h;
+}
+
+}  // namespace arnoldweb::detail

@@ -1,0 +1,217 @@
+// arnoldweb: from a validated scene to a plan (schedule, feature mask, buffers).
+#include "arnoldweb/plan.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+#include "arnoldweb/errors.hpp"
+#include "aw_model.h"
+#include "aw_params.h"
+#include "aw_rng.h"
+
+namespace arnoldweb {
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925;
+constexpr int kMaxAttempts = 256;
+constexpr double kMinAccessible = 0.10;       // rejection sampling stays cheap and certain
+constexpr std::uint64_t kMaxStateRecords = 50'000'000;
+
+std::string fmt(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+// n if x / unit is within rounding of the integer n >= 1, else 0.
+std::int64_t exact_ratio(double x, double unit) {
+  const double r = x / unit;
+  const double n = std::nearbyint(r);
+  if (n < 1 || std::fabs(r - n) > 1e-9 * n) return 0;
+  return static_cast<std::int64_t>(n);
+}
+
+[[noreturn]] void fail(const Scene& s, const std::string& key, const std::string& message) {
+  SourcePos p = s.pos(key);
+  throw SceneError(s.file, p.line, p.column, key, message);
+}
+
+}  // namespace
+
+std::string KernelConfig::defines() const {
+  std::ostringstream o;
+  o << "-DAW_FEATURES=" << features << "u -DAW_STAGES=" << stages
+    << " -DAW_KICK_FIRST=" << (kick_first ? 1 : 0) << " -DAW_INITIAL=" << initial;
+  if (precision == Precision::Float) o << " -DAW_FLOAT";
+  if (math == MathMode::Native) o << " -DAW_NATIVE_MATH";
+  return o.str();
+}
+
+bool KernelConfig::operator==(const KernelConfig& o) const {
+  return precision == o.precision && math == o.math && features == o.features &&
+         stages == o.stages && kick_first == o.kick_first && initial == o.initial;
+}
+
+std::vector<std::string> feature_names(std::uint32_t f) {
+  std::vector<std::string> n;
+  if (f & AW_F_VELOCITY_MAP) n.push_back("velocity_map");
+  if (f & AW_F_ENERGY) n.push_back("energy_error");
+  if (f & AW_F_ENERGY_LIMIT) n.push_back("max_energy_error");
+  if (f & AW_F_INITIAL_STATES) n.push_back("initial_states");
+  if (f & AW_F_FINAL_STATES) n.push_back("final_states");
+  if (f & AW_F_TEST_INJECT) n.push_back("test_inject");
+  return n;
+}
+
+StepGuard step_guard(double energy, double step, double average, double energy_every) {
+  StepGuard g;
+  g.p_max = std::sqrt(2.0 * (energy + 2.0));
+  g.value = step * kTwoPi * 2.0 * g.p_max;
+  g.limit = M_PI;
+  g.advised = M_PI / 2;
+  const double s_max = g.advised / (kTwoPi * 2.0 * g.p_max);
+  const double unit = (energy_every > 0 && energy_every <= average) ? energy_every : average;
+  const double n = std::ceil(unit / s_max - 1e-12);
+  g.safe_step = unit / std::max(1.0, n);
+  return g;
+}
+
+double accessible_fraction(double energy) {
+  constexpr int kSamples = 1 << 16;
+  int inside = 0;
+  for (int i = 0; i < kSamples; ++i) {
+    double a, b, c, d;
+    aw_uniform2(0x5eedULL, static_cast<aw_u64>(i), 0u, 0u, &a, &b);
+    aw_uniform2(0x5eedULL, static_cast<aw_u64>(i), 0u, 1u, &c, &d);
+    if (aw_potential(a - 0.5, b - 0.5, c - 0.5) < energy) ++inside;
+  }
+  return static_cast<double>(inside) / kSamples;
+}
+
+Plan make_plan(const Scene& scene) {
+  Plan p;
+  p.scene = scene;
+  try {
+    p.method = find_method(scene.method);
+  } catch (const std::out_of_range& e) {
+    fail(scene, "integrator.method", e.what());
+  }
+  const Method& m = p.method;
+
+  // ---- accessible phase space
+  if (!(scene.energy > -2.0))
+    fail(scene, "model.energy",
+         "E = " + fmt(scene.energy) + " leaves no accessible phase space (V >= -2 everywhere); "
+         "choose E > -2");
+  p.accessible_fraction = accessible_fraction(scene.energy);
+  if (p.accessible_fraction < kMinAccessible) {
+    double lo = scene.energy, hi = 2.0;  // smallest E with enough accessible torus
+    for (int i = 0; i < 40; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (accessible_fraction(mid) < kMinAccessible ? lo : hi) = mid;
+    }
+    fail(scene, "model.energy",
+         "at E = " + fmt(scene.energy) + " only " + fmt(100 * p.accessible_fraction) +
+             "% of the torus is accessible (V(X) < E); initial states are drawn by rejection "
+             "and need at least " + fmt(100 * kMinAccessible) + "%: choose E >= " +
+             fmt(std::ceil(hi * 1000) / 1000));
+  }
+
+  // ---- step schedule
+  if (scene.step_auto)
+    fail(scene, "integrator.step",
+         "\"auto\" needs an accuracy pilot; run `arnoldweb accuracy` for a recommendation "
+         "(automatic choice is not available in this version)");
+  p.step = scene.step;
+  const std::int64_t per_window = exact_ratio(scene.average, p.step);
+  if (per_window == 0)
+    fail(scene, "run.average",
+         "run.average = " + fmt(scene.average) + " T is not a positive multiple of "
+         "integrator.step = " + fmt(p.step) + " T (" + fmt(scene.average / p.step) + " steps)");
+  p.windows = exact_ratio(scene.duration, scene.average);
+  if (p.windows == 0)
+    fail(scene, "run.duration",
+         "run.duration = " + fmt(scene.duration) + " T is not a positive multiple of "
+         "run.average = " + fmt(scene.average) + " T");
+  const bool energy = scene.energy_error || scene.max_energy_error.has_value();
+  if (energy) {
+    p.segments_per_window = exact_ratio(scene.average, scene.energy_every);
+    const std::int64_t seg_steps = exact_ratio(scene.energy_every, p.step);
+    if (p.segments_per_window == 0 || seg_steps == 0 || seg_steps * p.segments_per_window != per_window)
+      fail(scene, "observe.energy_error.every",
+           "the energy sample interval " + fmt(scene.energy_every) + " T must divide "
+           "run.average = " + fmt(scene.average) + " T and be a multiple of integrator.step = " +
+               fmt(p.step) + " T");
+    p.steps_per_segment = seg_steps;
+  } else {
+    p.segments_per_window = 1;
+    p.steps_per_segment = per_window;
+  }
+  p.steps_per_trajectory = p.windows * per_window;
+  p.trajectory_steps = static_cast<double>(scene.trajectories) * static_cast<double>(p.steps_per_trajectory);
+  p.force_evaluations = p.trajectory_steps * m.stages;
+
+  // ---- step-size guard
+  p.guard = step_guard(scene.energy, p.step, scene.average, energy ? scene.energy_every : scene.average);
+  if (p.guard.refused() && !scene.allow_unsafe_step)
+    fail(scene, "integrator.step",
+         "step " + fmt(p.step) + " T is unsafe at E = " + fmt(scene.energy) + ": h k |p|max = " +
+             fmt(p.guard.value) + " >= pi (k = 2 for z, |p|max = " + fmt(p.guard.p_max) +
+             "), where splitting methods resonate and the energy error grows by orders of "
+             "magnitude; use integrator.step = " + fmt(p.guard.safe_step) +
+             " (h k |p|max = pi/2) or set integrator.allow_unsafe_step = true to run anyway");
+  if (p.guard.refused())
+    p.warnings.push_back("integrator.step: h k |p|max = " + fmt(p.guard.value) +
+                         " >= pi, allowed by integrator.allow_unsafe_step");
+  else if (p.guard.warned())
+    p.warnings.push_back("integrator.step: h k |p|max = " + fmt(p.guard.value) +
+                         " > pi/2; expect a larger energy error (safe step: " +
+                         fmt(p.guard.safe_step) + " T)");
+
+  // ---- features
+  KernelConfig& k = p.kernel;
+  k.precision = scene.precision;
+  k.math = scene.math;
+  k.stages = m.stages;
+  k.kick_first = m.kick_first;
+  k.initial = AW_INITIAL_SHELL;
+  if (scene.velocity_map) k.features |= AW_F_VELOCITY_MAP;
+  if (energy) k.features |= AW_F_ENERGY;
+  if (scene.max_energy_error) k.features |= AW_F_ENERGY_LIMIT;
+  if (scene.initial_states) k.features |= AW_F_INITIAL_STATES;
+  if (scene.final_states) k.features |= AW_F_FINAL_STATES;
+  if ((scene.initial_states || scene.final_states) && scene.trajectories > kMaxStateRecords)
+    fail(scene, scene.final_states ? "observe.final_states" : "observe.initial_states",
+         "state records are kept for at most " + std::to_string(kMaxStateRecords) +
+             " trajectories (" + std::to_string(scene.trajectories) + " asked for)");
+  if (scene.velocity_map) {
+    p.npix = 12ull * static_cast<std::uint64_t>(scene.nside) * static_cast<std::uint64_t>(scene.nside);
+    if (static_cast<double>(p.windows) * 4.0e6 > 4.0e9)
+      fail(scene, "run.duration", "more than 1000 averaging windows per trajectory");
+  }
+
+  // ---- parameter buffers
+  p.rp.assign(AW_P_COUNT, 0.0);
+  p.rp[AW_P_ENERGY] = scene.energy;
+  p.rp[AW_P_ENERGY_LIMIT] = scene.max_energy_error.value_or(std::numeric_limits<double>::infinity());
+  const double h = p.step * kTwoPi;
+  for (std::size_t i = 0; i < m.drift.size(); ++i) p.rp[AW_P_DRIFT + i] = m.drift[i] * p.step;
+  for (std::size_t i = 0; i < m.kick.size(); ++i) p.rp[AW_P_KICK + i] = m.kick[i] * h;
+  p.rp[AW_P_KICK_MERGED] = (m.kick.back() + m.kick.front()) * h;
+
+  p.ip.assign(AW_I_COUNT, 0);
+  p.ip[AW_I_SEED] = static_cast<std::int64_t>(scene.seed);
+  p.ip[AW_I_STEPS_PER_SEGMENT] = p.steps_per_segment;
+  p.ip[AW_I_SEGMENTS] = p.segments_per_window;
+  p.ip[AW_I_WINDOWS] = p.windows;
+  p.ip[AW_I_NSIDE] = scene.nside;
+  p.ip[AW_I_MAX_ATTEMPTS] = kMaxAttempts;
+  p.ip[AW_I_STAGES] = m.stages;
+  p.ip[AW_I_KICK_FIRST] = m.kick_first ? 1 : 0;
+  p.ip[AW_I_INJECT_INDEX] = -1;
+  return p;
+}
+
+}  // namespace arnoldweb
