@@ -1,0 +1,28 @@
+// arnoldweb tests: doctest main. Extra option --backend=cpu|opencl|cuda limits
+// the device-bound suites to one backend and exits 77 (skipped) if it has no
+// device here.
+#define DOCTEST_CONFIG_IMPLEMENT
+#include <doctest/doctest.h>
+
+#include <cstring>
+#include <iostream>
+
+#include "support.hpp"
+
+namespace awtest {
+extern std::string g_backend;
+}
+
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strncmp(argv[i], "--backend=", 10) == 0) awtest::g_backend = argv[i] + 10;
+  if (!awtest::g_backend.empty() && awtest::devices_under_test().empty()) {
+    std::cout << "SKIPPED: no " << awtest::g_backend << " device on this machine";
+    for (const auto& p : arnoldweb::backend_problems())
+      if (p.rfind(awtest::g_backend, 0) == 0) std::cout << "\n  " << p;
+    std::cout << std::endl;
+    return 77;
+  }
+  doctest::Context context(argc, argv);
+  return context.run();
+}
