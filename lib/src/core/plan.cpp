@@ -73,8 +73,16 @@ StepGuard step_guard(double energy, double step, double average, double energy_e
   g.advised = M_PI / 2;
   const double s_max = g.advised / (kTwoPi * 2.0 * g.p_max);
   const double unit = (energy_every > 0 && energy_every <= average) ? energy_every : average;
-  const double n = std::ceil(unit / s_max - 1e-12);
-  g.safe_step = unit / std::max(1.0, n);
+  // prefer a round number (1, 2, 2.5, 4, 5 x 10^k) that divides the schedule
+  for (double decade = std::pow(10.0, std::floor(std::log10(s_max))); decade > 1e-9 * s_max; decade /= 10)
+    for (double mantissa : {5.0, 4.0, 2.5, 2.0, 1.0}) {
+      const double s = mantissa * decade;
+      if (s <= s_max && exact_ratio(unit, s) > 0 && exact_ratio(average, s) > 0) {
+        g.safe_step = s;
+        return g;
+      }
+    }
+  g.safe_step = unit / std::max(1.0, std::ceil(unit / s_max - 1e-12));
   return g;
 }
 
