@@ -15,8 +15,10 @@ namespace arnoldweb {
 namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925;
-constexpr int kMaxAttempts = 256;
-constexpr double kMinAccessible = 0.10;       // rejection sampling stays cheap and certain
+// Initial positions are drawn by rejection: with accessible fraction f, each
+// trajectory tries up to 30/f positions (failure probability e^-30 ~ 1e-13).
+constexpr double kMinAccessible = 0.002;
+constexpr double kAttemptsTimesFraction = 30.0;
 constexpr std::uint64_t kMaxStateRecords = 50'000'000;
 
 std::string fmt(double v) {
@@ -122,8 +124,8 @@ Plan make_plan(const Scene& scene) {
     }
     fail(scene, "model.energy",
          "at E = " + fmt(scene.energy) + " only " + fmt(100 * p.accessible_fraction) +
-             "% of the torus is accessible (V(X) < E); initial states are drawn by rejection "
-             "and need at least " + fmt(100 * kMinAccessible) + "%: choose E >= " +
+             "% of the torus is accessible (V(X) < E); initial positions are drawn by "
+             "rejection and need at least " + fmt(100 * kMinAccessible) + "%: choose E >= " +
              fmt(std::ceil(hi * 1000) / 1000));
   }
 
@@ -215,7 +217,8 @@ Plan make_plan(const Scene& scene) {
   p.ip[AW_I_SEGMENTS] = p.segments_per_window;
   p.ip[AW_I_WINDOWS] = p.windows;
   p.ip[AW_I_NSIDE] = scene.nside;
-  p.ip[AW_I_MAX_ATTEMPTS] = kMaxAttempts;
+  p.ip[AW_I_MAX_ATTEMPTS] =
+      static_cast<std::int64_t>(std::ceil(kAttemptsTimesFraction / p.accessible_fraction));
   p.ip[AW_I_STAGES] = m.stages;
   p.ip[AW_I_KICK_FIRST] = m.kick_first ? 1 : 0;
   p.ip[AW_I_INJECT_INDEX] = -1;

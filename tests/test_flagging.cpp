@@ -1,0 +1,74 @@
+// Broken values: a trajectory that becomes NaN or Inf (injected by the test
+// hook AW_F_TEST_INJECT) or exceeds observe.max_energy_error is flagged,
+// counted by reason, and never binned; the run completes. On every device.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "aw_params.h"
+#include "support.hpp"
+
+using namespace arnoldweb;
+
+namespace {
+
+Plan flag_plan(std::uint64_t n) {
+  Scene s;
+  s.file = "<flagging>";
+  s.energy = 15;
+  s.trajectories = n;
+  s.step = 0.01;
+  s.average = 2;
+  s.duration = 4;  // two windows
+  s.nside = 8;
+  s.final_states = true;
+  return make_plan(s);
+}
+
+std::uint64_t total(const std::vector<std::uint64_t>& m) {
+  return std::accumulate(m.begin(), m.end(), std::uint64_t{0});
+}
+
+}  // namespace
+
+TEST_SUITE("parity") {
+  TEST_CASE("an injected NaN or Inf is flagged as non-finite and never binned") {
+    for (const auto& dev : awtest::devices_under_test()) {
+      for (double poison : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+        CAPTURE(dev.id);
+        CAPTURE(poison);
+        Plan p = flag_plan(1000);
+        p.kernel.features |= AW_F_TEST_INJECT;
+        p.rp[AW_P_INJECT_VALUE] = poison;
+        p.ip[AW_I_INJECT_INDEX] = 417;
+        const Result r = awtest::run_on(dev.id, p);
+        CHECK(r.flagged_nonfinite == 1);
+        CHECK(r.flagged_energy == 0);
+        CHECK(r.binned == 999);
+        CHECK(r.binned + r.flagged() == r.trajectories);
+        CHECK(total(r.map) == 999 * 2);  // two windows each
+        CHECK(r.final_i[417 * AW_STATE_INTS + 3] == AW_STATUS_NONFINITE);
+        CHECK(r.final_i[416 * AW_STATE_INTS + 3] == AW_STATUS_OK);
+        CHECK(std::isfinite(r.energy.max));
+      }
+    }
+  }
+
+  TEST_CASE("observe.max_energy_error flags and excludes trajectories above it") {
+    for (const auto& dev : awtest::devices_under_test()) {
+      CAPTURE(dev.id);
+      Scene s = flag_plan(2000).scene;
+      s.max_energy_error = 3e-7;  // about the median max|dE| at h = 0.01 T, E = 15
+      const Result r = awtest::run_on(dev.id, make_plan(s));
+      CHECK(r.flagged_energy > 100);
+      CHECK(r.binned > 100);
+      CHECK(r.binned + r.flagged() == r.trajectories);
+      CHECK(r.energy.max <= 3e-7);  // statistics are over binned trajectories
+      std::uint64_t windows_binned = total(r.map);
+      CHECK(windows_binned >= 2 * r.binned);        // flagged in window 2 still binned window 1
+      CHECK(windows_binned < 2 * r.trajectories);
+    }
+  }
+}
