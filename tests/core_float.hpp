@@ -1,9 +1,6 @@
 // The device core compiled as C++ in single precision, inside namespace core_f.
 #pragma once
-#include <Random123/philox.h>
-
-#include <cmath>
-#include <cstdint>
+#include "aw_cpp_std.h"
 
 #define AW_FLOAT 1
 namespace core_f {

@@ -55,6 +55,10 @@ typedef long long aw_i64;
 #define AW_CPP 1
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#if defined(__FMA__) || defined(__AVX512F__)
+#include <immintrin.h>
+#endif
 #if defined(__GNUC__)
 #define AW_FN static inline __attribute__((always_inline))
 #else
@@ -80,8 +84,8 @@ typedef double real;
 #ifndef AW_LANES
 #define AW_LANES 1
 #endif
-#if AW_LANES != 1 && !defined(AW_OPENCL)
-#error "AW_LANES > 1 is only available in OpenCL C (explicit vector types)"
+#if AW_LANES != 1 && !defined(AW_OPENCL) && !(defined(AW_CPP) && defined(__GNUC__))
+#error "AW_LANES > 1 needs explicit vector types: OpenCL C, or GCC/Clang vector extensions in C++"
 #endif
 
 #define AW_CAT_(a, b) a##b
@@ -97,6 +101,19 @@ typedef aw_i64 lint;
 #define AW_LANE_TO_INT(x) ((lint)(x))
 #define AW_INT_TO_LANE(x) ((lreal)(x))
 #define AW_ALL(c) (c)
+#define AW_STORE_ILANES(v, arr) ((arr)[0] = (v))
+#elif defined(AW_CPP)
+/* C++ with GCC/Clang vector extensions: + - * / and comparisons are
+ * element-wise, `c ? b : a` selects per element, scalars broadcast. */
+typedef real lreal __attribute__((vector_size(sizeof(real) * AW_LANES)));
+typedef aw_i64 lint __attribute__((vector_size(8 * AW_LANES)));
+#define AW_SELECT(a, b, c) ((c) ? (b) : (a))
+#define AW_LOAD_LANES(arr) aw_load_lanes(arr)
+#define AW_STORE_LANES(v, arr) std::memcpy((arr), &(v), sizeof(lreal))
+#define AW_STORE_ILANES(v, arr) std::memcpy((arr), &(v), sizeof(lint))
+#define AW_LANE_TO_INT(x) __builtin_convertvector((x), lint)
+#define AW_INT_TO_LANE(x) __builtin_convertvector((x), lreal)
+#define AW_ALL(c) aw_all_lanes(c)
 #else
 #ifdef AW_FLOAT
 typedef AW_CAT(float, AW_LANES) lreal;
@@ -114,14 +131,83 @@ typedef AW_CAT(long, AW_LANES) lint;
 #define AW_INT_TO_LANE(x) AW_CAT(convert_double, AW_LANES)(x)
 #endif
 #define AW_ALL(c) all(c)
+#define AW_STORE_ILANES(v, arr) AW_CAT(vstore, AW_LANES)((v), 0, (arr))
 #endif
 /* a scalar broadcast to every lane (OpenCL's builtins do not mix the two) */
+#if defined(AW_CPP) && AW_LANES > 1
+#define AW_LSPLAT(x) ((lreal){} + (x))
+#define AW_ISPLAT(x) ((lint){} + (x))
+#else
 #define AW_LSPLAT(x) ((lreal)(x))
+#define AW_ISPLAT(x) ((lint)(x))
+#endif
 
 /* ------------------------------------------------------------ arithmetic
  * Only explicit fma: FP contraction is off in every dialect, so a*b+c is two
  * roundings everywhere and fma(a,b,c) is one rounding everywhere. */
-#if defined(AW_CPP)
+#if defined(AW_CPP) && AW_LANES > 1
+/* Scalar and lane overloads. The lane versions apply the correctly rounded
+ * scalar operation to each element; the compiler vectorises the loops. */
+AW_FN real aw_fma(real a, real b, real c) { return std::fma(a, b, c); }
+AW_FN real aw_sqrt(real x) { return std::sqrt(x); }
+AW_FN real aw_fabs(real x) { return std::fabs(x); }
+AW_FN bool aw_isfinite(real x) { return std::isfinite(x); }
+/* Element-wise fma with one rounding. Compilers do not reliably vectorise a
+ * loop of scalar fma calls over vector elements, so use the vector FMA
+ * instructions where the target has them (same IEEE result per element). */
+AW_FN lreal aw_fma(lreal a, lreal b, lreal c) {
+  lreal r;
+#if defined(__AVX512F__) && !defined(AW_FLOAT) && AW_LANES == 8
+  r = (lreal)_mm512_fmadd_pd((__m512d)a, (__m512d)b, (__m512d)c);
+#elif defined(__AVX512F__) && defined(AW_FLOAT) && AW_LANES == 16
+  r = (lreal)_mm512_fmadd_ps((__m512)a, (__m512)b, (__m512)c);
+#elif defined(__FMA__) && ((!defined(AW_FLOAT) && AW_LANES % 4 == 0) || (defined(AW_FLOAT) && AW_LANES % 8 == 0))
+  for (int i = 0; i < (int)(sizeof(lreal) / 32); ++i) {
+#ifdef AW_FLOAT
+    __m256 x, y, z;
+    std::memcpy(&x, (const char*)&a + 32 * i, 32);
+    std::memcpy(&y, (const char*)&b + 32 * i, 32);
+    std::memcpy(&z, (const char*)&c + 32 * i, 32);
+    __m256 o = _mm256_fmadd_ps(x, y, z);
+#else
+    __m256d x, y, z;
+    std::memcpy(&x, (const char*)&a + 32 * i, 32);
+    std::memcpy(&y, (const char*)&b + 32 * i, 32);
+    std::memcpy(&z, (const char*)&c + 32 * i, 32);
+    __m256d o = _mm256_fmadd_pd(x, y, z);
+#endif
+    std::memcpy((char*)&r + 32 * i, &o, 32);
+  }
+#else
+  for (int i = 0; i < AW_LANES; ++i) r[i] = std::fma(a[i], b[i], c[i]);
+#endif
+  return r;
+}
+AW_FN lreal aw_sqrt(lreal x) {
+  lreal r;
+  for (int i = 0; i < AW_LANES; ++i) r[i] = std::sqrt(x[i]);
+  return r;
+}
+AW_FN lreal aw_fabs(lreal x) { return (x < 0) ? -x : x; }
+/* x - x is 0 for finite x and NaN for NaN and +-Inf (no fast-math here) */
+AW_FN auto aw_isfinite(lreal x) { return (x - x) == 0; }
+template <class M>
+AW_FN bool aw_all_lanes(M m) {
+  for (int i = 0; i < AW_LANES; ++i)
+    if (!m[i]) return false;
+  return true;
+}
+AW_FN lreal aw_load_lanes(const real* a) {
+  lreal v;
+  std::memcpy(&v, a, sizeof v);
+  return v;
+}
+#define AW_FMA(a, b, c) aw_fma((a), (b), (c))
+#define AW_SQRT(x) aw_sqrt(x)
+#define AW_FABS(x) aw_fabs(x)
+#define AW_ISFINITE(x) aw_isfinite(x)
+#define AW_FREXP(x, e) std::frexp((x), (e))
+#elif defined(AW_CPP)
 #define AW_FMA(a, b, c) std::fma((a), (b), (c))
 #define AW_SQRT(x) std::sqrt(x)
 #define AW_FABS(x) std::fabs(x)

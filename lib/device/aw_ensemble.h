@@ -155,13 +155,9 @@ AW_FN void aw_ensemble_item(aw_u32 features, int stages, int kick_first, aw_u64 
       aw_store_states(out.final_r, rec, &s, j);
       lint wv[3] = {s.wx, s.wy, s.wz};
       for (int c = 0; c < 3; ++c) {
-#if AW_LANES == 1
-        out.final_i[rec * AW_STATE_INTS + c] = wv[c];
-#else
         aw_i64 wa[AW_LANES];
-        AW_CAT(vstore, AW_LANES)(wv[c], 0, wa);
+        AW_STORE_ILANES(wv[c], wa);
         out.final_i[rec * AW_STATE_INTS + c] = wa[j];
-#endif
       }
       out.final_i[rec * AW_STATE_INTS + 3] = st;
     }

@@ -27,7 +27,7 @@ AW_FN lreal aw_initial_shell(aw_lstate* s, aw_u64 first, AW_CONSTANT real* rp,
   lreal accepted = AW_LSPLAT(AW_R(0.0));
   s->ux = s->uy = s->uz = AW_LSPLAT(AW_R(0.0));
   s->px = s->py = s->pz = AW_LSPLAT(AW_R(0.0));
-  s->wx = s->wy = s->wz = (lint)(0);
+  s->wx = s->wy = s->wz = AW_ISPLAT(0);
   for (int attempt = 0; attempt < max_attempts; ++attempt) {
     for (int j = 0; j < AW_LANES; ++j) {
       aw_u64 index = first + (aw_u64)j;

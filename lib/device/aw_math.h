@@ -47,8 +47,15 @@ AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) {
   sincospi(AW_R(2.0) * u, s, c);
 #else
   const real twopi = AW_R(6.283185307179586);
+#if AW_LANES > 1
+  for (int i = 0; i < AW_LANES; ++i) {
+    (*s)[i] = std::sin(twopi * u[i]);
+    (*c)[i] = std::cos(twopi * u[i]);
+  }
+#else
   *s = std::sin(twopi * u);
   *c = std::cos(twopi * u);
+#endif
 #endif
 }
 #else
@@ -57,29 +64,29 @@ AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) {
   lreal x4 = AW_R(4.0) * u;            /* exact */
   lreal k = AW_RINT_SMALL(x4);         /* nearest integer, ties to even */
   lreal f = x4 - k;                    /* exact, in [-1/2, 1/2] */
-  lreal r = AW_FMA(f, AW_PIO2_HI, f * AW_PIO2_LO); /* f * pi/2, one rounding */
+  lreal r = AW_FMA(f, AW_LSPLAT(AW_PIO2_HI), f * AW_PIO2_LO); /* f * pi/2, one rounding */
   lreal z = r * r;
 #ifdef AW_FLOAT
   /* Cephes sinf/cosf minimax kernels on [-pi/4, pi/4] */
-  lreal ps = AW_FMA(z, AW_R(-1.9515295891e-4), AW_R(8.3321608736e-3));
-  ps = AW_FMA(z, ps, AW_R(-1.6666654611e-1));
+  lreal ps = AW_FMA(z, AW_LSPLAT(AW_R(-1.9515295891e-4)), AW_LSPLAT(AW_R(8.3321608736e-3)));
+  ps = AW_FMA(z, ps, AW_LSPLAT(AW_R(-1.6666654611e-1)));
   lreal sr = AW_FMA(r * z, ps, r);
-  lreal pc = AW_FMA(z, AW_R(2.443315711809948e-5), AW_R(-1.388731625493765e-3));
-  pc = AW_FMA(z, pc, AW_R(4.166664568298827e-2));
-  lreal cr = AW_FMA(z * z, pc, AW_FMA(AW_R(-0.5), z, AW_R(1.0)));
+  lreal pc = AW_FMA(z, AW_LSPLAT(AW_R(2.443315711809948e-5)), AW_LSPLAT(AW_R(-1.388731625493765e-3)));
+  pc = AW_FMA(z, pc, AW_LSPLAT(AW_R(4.166664568298827e-2)));
+  lreal cr = AW_FMA(z * z, pc, AW_FMA(AW_LSPLAT(AW_R(-0.5)), z, AW_LSPLAT(AW_R(1.0))));
 #else
   /* fdlibm __kernel_sin / __kernel_cos on [-pi/4, pi/4] */
-  lreal ps = AW_FMA(z, 1.58969099521155010221e-10, -2.50507602534068634195e-08);
-  ps = AW_FMA(z, ps, 2.75573137070700676789e-06);
-  ps = AW_FMA(z, ps, -1.98412698298579493134e-04);
-  ps = AW_FMA(z, ps, 8.33333333332248946124e-03);
-  ps = AW_FMA(z, ps, -1.66666666666666324348e-01);
+  lreal ps = AW_FMA(z, AW_LSPLAT(1.58969099521155010221e-10), AW_LSPLAT(-2.50507602534068634195e-08));
+  ps = AW_FMA(z, ps, AW_LSPLAT(2.75573137070700676789e-06));
+  ps = AW_FMA(z, ps, AW_LSPLAT(-1.98412698298579493134e-04));
+  ps = AW_FMA(z, ps, AW_LSPLAT(8.33333333332248946124e-03));
+  ps = AW_FMA(z, ps, AW_LSPLAT(-1.66666666666666324348e-01));
   lreal sr = AW_FMA(r * z, ps, r);
-  lreal pc = AW_FMA(z, -1.13596475577881948265e-11, 2.08757232129817482790e-09);
-  pc = AW_FMA(z, pc, -2.75573143513906633035e-07);
-  pc = AW_FMA(z, pc, 2.48015872894767294178e-05);
-  pc = AW_FMA(z, pc, -1.38888888888741095749e-03);
-  pc = AW_FMA(z, pc, 4.16666666666666019037e-02);
+  lreal pc = AW_FMA(z, AW_LSPLAT(-1.13596475577881948265e-11), AW_LSPLAT(2.08757232129817482790e-09));
+  pc = AW_FMA(z, pc, AW_LSPLAT(-2.75573143513906633035e-07));
+  pc = AW_FMA(z, pc, AW_LSPLAT(2.48015872894767294178e-05));
+  pc = AW_FMA(z, pc, AW_LSPLAT(-1.38888888888741095749e-03));
+  pc = AW_FMA(z, pc, AW_LSPLAT(4.16666666666666019037e-02));
   lreal hz = 0.5 * z;
   lreal w = 1.0 - hz;
   lreal cr = w + AW_FMA(z * z, pc, (1.0 - w) - hz);

@@ -1,12 +1,9 @@
 // arnoldweb: cpu kernel variant "double_native" (see cpu_kernel_body.inc).
-#include <Random123/philox.h>  // variant-independent types stay outside the namespace
-
-#include <cmath>
-#include <cstdint>
-
+#include "aw_cpp_std.h"  // outside the variant's namespace
 #include "backends/cpu/cpu_kernel.hpp"
 
 #define AW_NATIVE_MATH 1
+#define AW_LANES 8  // trajectories per vector (GCC vector extensions)
 namespace arnoldweb::detail {
 namespace cpu_double_native {
 #include "backends/cpu/cpu_kernel_body.inc"

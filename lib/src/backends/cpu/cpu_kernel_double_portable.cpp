@@ -1,11 +1,8 @@
 // arnoldweb: cpu kernel variant "double_portable" (see cpu_kernel_body.inc).
-#include <Random123/philox.h>  // variant-independent types stay outside the namespace
-
-#include <cmath>
-#include <cstdint>
-
+#include "aw_cpp_std.h"  // outside the variant's namespace
 #include "backends/cpu/cpu_kernel.hpp"
 
+#define AW_LANES 8  // trajectories per vector (GCC vector extensions)
 namespace arnoldweb::detail {
 namespace cpu_double_portable {
 #include "backends/cpu/cpu_kernel_body.inc"

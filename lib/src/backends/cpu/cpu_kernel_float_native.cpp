@@ -1,13 +1,10 @@
 // arnoldweb: cpu kernel variant "float_native" (see cpu_kernel_body.inc).
-#include <Random123/philox.h>  // variant-independent types stay outside the namespace
-
-#include <cmath>
-#include <cstdint>
-
+#include "aw_cpp_std.h"  // outside the variant's namespace
 #include "backends/cpu/cpu_kernel.hpp"
 
 #define AW_FLOAT 1
 #define AW_NATIVE_MATH 1
+#define AW_LANES 16  // trajectories per vector (GCC vector extensions)
 namespace arnoldweb::detail {
 namespace cpu_float_native {
 #include "backends/cpu/cpu_kernel_body.inc"
