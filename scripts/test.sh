@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Set up (scripts/bootstrap.sh) and run the whole test suite on every device
+# present. Suites bound to a backend this machine lacks (e.g. cuda without a
+# GPU) are reported as skipped, with the reason.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/bootstrap.sh
+ctest --test-dir build --output-on-failure --timeout 1500 -j"$(nproc)" "$@"
