@@ -18,10 +18,12 @@ const char* to_string(Precision p);
 const char* to_string(MathMode m);
 
 // Where a key was written (for messages about values that are only found to be
-// wrong later, e.g. by the planner). line 0: not in the file (a default).
+// wrong later, e.g. by the planner). line 0: not in the file (a default, or
+// a --set override: then set_index says which).
 struct SourcePos {
   int line = 0;
   int column = 0;
+  int set_index = 0;  // 1-based index into Scene::overrides if --set gave the value
 };
 
 struct Scene {
@@ -70,6 +72,9 @@ struct Scene {
   std::string to_toml() const;
   // Position of a dotted key, for messages ({0, 0} for defaults).
   SourcePos pos(const std::string& key) const;
+  // Where a key's value came from, for messages: "scene.toml:7:9",
+  // "--set integrator.step=0.005" or "default".
+  std::string origin(const std::string& key) const;
 };
 
 // Read and validate a scene file; apply `overrides` ("key=value", value in TOML

@@ -1,27 +1,99 @@
-// STUB: replaced by the scene implementation (toml++).
+// arnoldweb scene layer: the entry points. A scene is read in four steps:
+// TOML syntax, --set overrides applied on top, every section and key known,
+// every value of the right type and range. All problems are collected; the
+// first one (in file order, then the overrides in order) is thrown.
 #include "arnoldweb/scene.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
 #include "arnoldweb/errors.hpp"
+#include "scene/scene_internal.hpp"
 
 namespace arnoldweb {
-const char* to_string(Precision p) { return p == Precision::Float ? "float" : "double"; }
-const char* to_string(MathMode m) { return m == MathMode::Native ? "native" : "portable"; }
-std::string Scene::to_toml() const { return ""; }
+
+const char* to_string(Precision p) {
+  for (const auto& n : scene_detail::precision_names())
+    if (n.value == p) return n.name;
+  return "?";
+}
+
+const char* to_string(MathMode m) {
+  for (const auto& n : scene_detail::math_names())
+    if (n.value == m) return n.name;
+  return "?";
+}
+
 SourcePos Scene::pos(const std::string& key) const {
   auto it = where.find(key);
   return it == where.end() ? SourcePos{} : it->second;
 }
-Scene load_scene(const std::string& path, const std::vector<std::string>&) {
-  Scene s;
-  s.file = path;
-  return s;
+
+std::string Scene::origin(const std::string& key) const {
+  const SourcePos p = pos(key);
+  if (p.set_index > 0 && static_cast<std::size_t>(p.set_index) <= overrides.size())
+    return "--set " + overrides[static_cast<std::size_t>(p.set_index - 1)];
+  if (p.line > 0) return file + ":" + std::to_string(p.line) + ":" + std::to_string(p.column);
+  return "default";
 }
-Scene parse_scene(const std::string&, const std::string& file, const std::vector<std::string>&) {
-  Scene s;
-  s.file = file;
-  return s;
+
+Scene parse_scene(const std::string& text, const std::string& file,
+                  const std::vector<std::string>& overrides) {
+  using namespace scene_detail;
+  Scene scene;
+  scene.file = file.empty() ? "<string>" : file;
+  scene.overrides = overrides;
+
+  toml::table root;
+  try {
+    root = toml::parse(text, scene.file);
+  } catch (const toml::parse_error& e) {
+    throw SceneError(scene.file, static_cast<int>(e.source().begin.line),
+                     static_cast<int>(e.source().begin.column), "",
+                     "TOML syntax error: " + std::string(e.description()));
+  }
+
+  Origins origins;
+  origins.file = scene.file;
+  Problems problems(origins);
+  apply_overrides(root, overrides, origins, problems);
+  check_structure(root, problems);
+  read_values(root, origins, problems, scene);
+  if (!problems.empty()) problems.throw_first();
+  return scene;
 }
-const std::vector<SceneKey>& scene_keys() {
-  static std::vector<SceneKey> k;
-  return k;
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  auto fail = [&](const std::string& what) {
+    throw SceneError(path, 0, 0, "", "cannot read the scene file: " + what);
+  };
+  if (path.empty()) fail("no file name given");
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) fail(std::strerror(errno));
+  struct stat st {};
+  if (::fstat(fd, &st) == 0 && S_ISDIR(st.st_mode)) {
+    ::close(fd);
+    fail("it is a directory");
+  }
+  std::string text;
+  char buf[1 << 16];
+  while (true) {
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n == 0) break;
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const int err = errno;
+      ::close(fd);
+      fail(std::strerror(err));
+    }
+    text.append(buf, static_cast<std::size_t>(n));
+  }
+  ::close(fd);
+  return parse_scene(text, path, overrides);
 }
+
 }  // namespace arnoldweb

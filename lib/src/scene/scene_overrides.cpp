@@ -1,0 +1,121 @@
+// arnoldweb scene layer: --set key=value overrides, applied onto the parsed
+// file before anything is checked, so an override is checked like the file.
+#include "scene/scene_internal.hpp"
+
+namespace arnoldweb::scene_detail {
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t");
+  return s.substr(b, e - b + 1);
+}
+
+std::vector<std::string> split_dots(const std::string& key) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  while (true) {
+    const auto dot = key.find('.', start);
+    parts.push_back(key.substr(start, dot == std::string::npos ? dot : dot - start));
+    if (dot == std::string::npos) return parts;
+    start = dot + 1;
+  }
+}
+
+// The value of an override: a TOML value if it reads as one, else the text
+// itself (so run.device=opencl:0 and output.dir=/tmp/x need no quotes). For
+// keys that only take strings the text is used as is (output.dir=2024).
+toml::table value_of(const std::string& text, const KeySpec& spec) {
+  if (spec.doc.type != "string") {
+    try {
+      toml::table t = toml::parse("v = " + text);
+      if (t.size() == 1 && t.contains("v")) return t;
+    } catch (const toml::parse_error&) {
+    }
+  } else if (!text.empty() && (text.front() == '"' || text.front() == '\'')) {
+    try {
+      toml::table t = toml::parse("v = " + text);
+      if (t.size() == 1 && t["v"].is_string()) return t;
+    } catch (const toml::parse_error&) {
+    }
+  }
+  toml::table t;
+  t.insert("v", text);
+  return t;
+}
+
+// Sets root[parts...] = value. Sections that do not exist are created; a
+// composite key that is not a table (velocity_map = false) becomes one, so
+// --set observe.velocity_map.nside=128 turns the map on.
+void set_path(toml::table& root, const std::vector<std::string>& parts, const toml::node& value,
+              int index, Origins& origins) {
+  toml::table* t = &root;
+  std::string dotted;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    dotted += (i ? "." : "") + parts[i];
+    auto it = t->find(parts[i]);
+    if (it != t->end() && it->second.is_table()) {
+      t = it->second.as_table();
+      continue;
+    }
+    if (it != t->end() && i == 0) return;  // [section] is not a table: the file's problem
+    if (i > 0) origins.set_of[dotted] = index;
+    t = t->insert_or_assign(parts[i], toml::table{}).first->second.as_table();
+  }
+  t->insert_or_assign(parts.back(), value);
+  const std::string key = dotted.empty() ? parts.back() : dotted + "." + parts.back();
+  // This override now gives the key and everything under it.
+  for (auto it = origins.set_of.lower_bound(key + "."); it != origins.set_of.end() &&
+                                                         it->first.compare(0, key.size() + 1, key + ".") == 0;)
+    it = origins.set_of.erase(it);
+  origins.set_of[key] = index;
+}
+
+}  // namespace
+
+void apply_overrides(toml::table& root, const std::vector<std::string>& overrides,
+                     Origins& origins, Problems& problems) {
+  for (const std::string& text : overrides) origins.sets.push_back(text);
+  for (std::size_t n = 0; n < overrides.size(); ++n) {
+    const int index = static_cast<int>(n) + 1;
+    const std::string& text = overrides[n];
+    auto problem = [&](const std::string& key, const std::string& message) {
+      Problem p;
+      p.set_index = index;
+      p.key = key;
+      p.message = message;
+      problems.add(std::move(p));
+    };
+    const auto eq = text.find('=');
+    const std::string key = trim(text.substr(0, eq));
+    if (eq == std::string::npos || key.empty()) {
+      problem(key, "an override is key=value, e.g. --set integrator.step=0.005");
+      continue;
+    }
+    const KeySpec* spec = find_spec(key);
+    if (!spec) {
+      if (is_section(key)) {
+        problem(key, "is a section; --set sets one of its keys (" + keys_of(key) + "), e.g. --set " +
+                         key + "." + keys_of(key).substr(0, keys_of(key).find(',')) + "=...");
+      } else {
+        const std::string near = closest_key(key);
+        const std::string section = key.substr(0, key.find('.'));
+        std::string known;
+        if (is_section(section)) {
+          known = "keys of [" + section + "]: " + keys_of(section);
+        } else {
+          for (const std::string& s : sections()) known += (known.empty() ? "sections: " : ", ") + s;
+        }
+        problem(key, "unknown key" +
+                         (near.empty() ? std::string(" ") : "; did you mean '" + near + "'? ") +
+                         "(" + known + ")");
+      }
+      continue;
+    }
+    const toml::table holder = value_of(trim(text.substr(eq + 1)), *spec);
+    set_path(root, split_dots(key), *holder.get("v"), index, origins);
+  }
+}
+
+}  // namespace arnoldweb::scene_detail

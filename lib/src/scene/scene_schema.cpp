@@ -1,0 +1,297 @@
+// arnoldweb scene layer: the key table. One row per key: its documentation,
+// the phrase its error messages use, and how to_toml() writes its value.
+// Adding a key: a row here, a read in scene_read.cpp, a field in Scene.
+#include <algorithm>
+#include <cctype>
+
+#include "arnoldweb/methods.hpp"
+#include "scene/scene_internal.hpp"
+
+namespace arnoldweb::scene_detail {
+namespace {
+
+std::string quoted_list(const std::vector<std::string>& names, const char* last_sep) {
+  std::string s;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i) s += i + 1 == names.size() ? last_sep : ", ";
+    s += "\"" + names[i] + "\"";
+  }
+  return s;
+}
+
+std::vector<std::string> method_name_list() {
+  std::vector<std::string> n;
+  for (const Method& m : methods()) n.push_back(m.name);
+  return n;
+}
+
+// "one of "a", "b", "c"" (or just "a" when there is one).
+std::string one_of(const std::vector<std::string>& names) {
+  if (names.size() == 1) return "\"" + names[0] + "\"";
+  return "one of " + quoted_list(names, ", ");
+}
+
+std::string boolean(bool b) { return b ? "true" : "false"; }
+
+std::vector<KeySpec> build() {
+  const std::string device_forms = "\"auto\", \"cpu\", \"opencl:N\" or \"cuda:N\"";
+  std::vector<KeySpec> k;
+  auto add = [&k](std::string key, std::string type, std::string allowed, std::string must,
+                  std::string (*literal)(const Scene&), std::string meaning,
+                  Shape shape = Shape::Value) {
+    KeySpec s;
+    s.doc.key = std::move(key);
+    s.doc.type = std::move(type);
+    s.doc.allowed = std::move(allowed);
+    s.doc.meaning = std::move(meaning);
+    s.must = std::move(must);
+    s.literal = literal;
+    s.shape = shape;
+    const std::string d = literal(Scene{});
+    s.doc.default_value = d.empty() ? "(not set)" : d;
+    k.push_back(std::move(s));
+  };
+
+  // [model]
+  add("model.energy", "float", "> -2 and <= 1e6",
+      "a float greater than -2 and at most 1e6 (for E <= -2 no phase space is accessible)",
+      [](const Scene& s) { return toml_double(s.energy); },
+      "Total energy E of every trajectory; the effective perturbation is 2/E.");
+
+  // [ensemble]
+  add("ensemble.trajectories", "integer", "1 to 1e13", "an integer from 1 to 1e13",
+      [](const Scene& s) { return std::to_string(s.trajectories); },
+      "Number of trajectories in the ensemble.");
+  add("ensemble.seed", "integer", ">= 0", "an integer >= 0",
+      [](const Scene& s) { return std::to_string(s.seed); },
+      "Seed of the counter-based random numbers: trajectory i starts from a state that depends "
+      "only on (seed, i), whatever the device or chunking.");
+  add("ensemble.initial", "string", quoted_list(initial_kinds(), " or "), one_of(initial_kinds()),
+      [](const Scene& s) { return toml_string(s.initial); },
+      "How initial states are drawn. \"shell\": X uniform on the accessible part of the torus, "
+      "direction of P uniform on the sphere, |P| = sqrt(2 (E - V(X))).");
+  add("ensemble.chunk", "integer", ">= 0 (0 = automatic)", "an integer >= 0 (0 = automatic)",
+      [](const Scene& s) { return std::to_string(s.chunk); },
+      "Trajectories per kernel launch; 0 lets the runner choose. Does not change the results.");
+
+  // [integrator]
+  add("integrator.method", "string", quoted_list(method_name_list(), " or "),
+      one_of(method_name_list()), [](const Scene& s) { return toml_string(s.method); },
+      "Symplectic integration method (`arnoldweb methods` lists order and cost).");
+  add("integrator.step", "float or \"auto\"", "> 0 and <= 1, or \"auto\"",
+      "a float greater than 0 and at most 1 (the step in units of T = 2 pi) or \"auto\"",
+      [](const Scene& s) { return s.step_auto ? std::string("\"auto\"") : toml_double(s.step); },
+      "Integration step h in units of T = 2 pi. \"auto\": choose a step that meets "
+      "integrator.tolerance.");
+  add("integrator.tolerance", "float", "> 0 and < 1", "a float greater than 0 and less than 1",
+      [](const Scene& s) { return toml_double(s.tolerance); },
+      "Target max |dE| over the ensemble, used with integrator.step = \"auto\".");
+  add("integrator.precision", "string", quoted_list(names_of(precision_names()), " or "),
+      one_of(names_of(precision_names())),
+      [](const Scene& s) { return toml_string(to_string(s.precision)); },
+      "Floating-point type of the integration.");
+  add("integrator.math", "string", quoted_list(names_of(math_names()), " or "),
+      one_of(names_of(math_names())), [](const Scene& s) { return toml_string(to_string(s.math)); },
+      "\"portable\": the same bits on every backend (own sin/cos, no contraction). \"native\": "
+      "vendor functions where faster; results then differ between backends.");
+  add("integrator.allow_unsafe_step", "boolean", "true or false", "true or false",
+      [](const Scene& s) { return boolean(s.allow_unsafe_step); },
+      "Run even when the step-size guard refuses the step (h k |p|max >= pi).");
+
+  // [run]
+  add("run.average", "float", "> 0", "a finite float greater than 0 (in units of T)",
+      [](const Scene& s) { return toml_double(s.average); },
+      "Averaging window dt of the velocity, in T; a multiple of integrator.step.");
+  add("run.duration", "float", "> 0", "a finite float greater than 0 (in units of T)",
+      [](const Scene& s) { return toml_double(s.duration); },
+      "Propagation time t_p, in T; a multiple of run.average.");
+  add("run.device", "string", device_forms,
+      device_forms + " (N = 0, 1, ...: the index in `arnoldweb devices`)",
+      [](const Scene& s) { return toml_string(s.device); },
+      "Where to run. \"auto\" picks the default device; whether the device exists is checked "
+      "when the run starts.");
+
+  // [observe]
+  add("observe.velocity_map", "table or boolean", "{ nside = N }, true or false",
+      "a table { nside = N }, true (nside 64) or false",
+      [](const Scene& s) {
+        return s.velocity_map ? "{ nside = " + std::to_string(s.nside) + " }" : boolean(false);
+      },
+      "HEALPix map of the directions of the averaged velocities; false: no map. true: the "
+      "default nside.",
+      Shape::Composite);
+  add("observe.velocity_map.nside", "integer", "power of two, 1 to 8192",
+      "a power of two from 1 to 8192", [](const Scene& s) { return std::to_string(s.nside); },
+      "HEALPix resolution of the velocity map: 12 nside^2 pixels.");
+  add("observe.energy_error", "boolean or table", "true, false or { every = dt }",
+      "true, false or a table { every = <sample interval in T> }",
+      [](const Scene& s) {
+        return s.energy_error ? "{ every = " + toml_double(s.energy_every) + " }" : boolean(false);
+      },
+      "Track the energy error |dE| of every trajectory. A table sets the sample interval; true "
+      "samples every 1 T.",
+      Shape::Composite);
+  add("observe.energy_error.every", "float", "> 0",
+      "a finite float greater than 0 (sample interval in T)",
+      [](const Scene& s) { return toml_double(s.energy_every); },
+      "Interval between |dE| samples, in T; divides run.average.");
+  add("observe.max_energy_error", "float", "> 0, or absent", "a finite float greater than 0",
+      [](const Scene& s) {
+        return s.max_energy_error ? toml_double(*s.max_energy_error) : std::string();
+      },
+      "Flag trajectories whose |dE| exceeds this value; absent: no limit.");
+  add("observe.initial_states", "boolean", "true or false", "true or false",
+      [](const Scene& s) { return boolean(s.initial_states); },
+      "Write the initial state of every trajectory.");
+  add("observe.final_states", "boolean", "true or false", "true or false",
+      [](const Scene& s) { return boolean(s.final_states); },
+      "Write the final state of every trajectory.");
+
+  // [output]
+  add("output.dir", "string", "non-empty path", "a non-empty string (a directory path)",
+      [](const Scene& s) { return toml_string(s.output_dir); },
+      "Directory the outputs are written to.");
+  add("output.images", "boolean", "true or false", "true or false",
+      [](const Scene& s) { return boolean(s.images); }, "Write images of the maps.");
+  return k;
+}
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string parent_of(const std::string& k) {
+  const auto dot = k.rfind('.');
+  return dot == std::string::npos ? std::string() : k.substr(0, dot);
+}
+
+std::string leaf_of(const std::string& k) {
+  const auto dot = k.rfind('.');
+  return dot == std::string::npos ? k : k.substr(dot + 1);
+}
+
+}  // namespace
+
+const std::vector<KeySpec>& key_specs() {
+  static const std::vector<KeySpec> specs = build();
+  return specs;
+}
+
+const KeySpec* find_spec(const std::string& dotted) {
+  for (const KeySpec& s : key_specs())
+    if (s.doc.key == dotted) return &s;
+  return nullptr;
+}
+
+const std::vector<std::string>& sections() {
+  static const std::vector<std::string> s = {"model", "ensemble", "integrator",
+                                             "run",   "observe",  "output"};
+  return s;
+}
+
+bool is_section(const std::string& name) {
+  const auto& s = sections();
+  return std::find(s.begin(), s.end(), name) != s.end();
+}
+
+std::string closest_key(const std::string& unknown) {
+  const std::string u = lower(unknown);
+  const std::string u_parent = parent_of(u), u_leaf = leaf_of(u);
+  // A typo scores its edit distance; the right name in the wrong section
+  // scores 2 more than the distance of the last parts.
+  std::vector<std::string> candidates;
+  if (u_parent.empty()) candidates = sections();
+  for (const KeySpec& s : key_specs()) candidates.push_back(s.doc.key);
+  std::string best;
+  std::size_t best_score = std::max<std::size_t>(2, u_leaf.size() / 2) + 1;
+  for (const std::string& c : candidates) {
+    std::size_t score = edit_distance(u, c);
+    if (parent_of(c) != u_parent)
+      score = std::min(score, edit_distance(u_leaf, leaf_of(c)) + 2);
+    if (score < best_score) {
+      best_score = score;
+      best = c;
+    }
+  }
+  return best == unknown ? std::string() : best;
+}
+
+std::string closest_word(const std::string& word, const std::vector<std::string>& words) {
+  std::string best;
+  std::size_t best_score = std::max<std::size_t>(2, word.size() / 3) + 1;
+  for (const std::string& w : words) {
+    const std::size_t score = edit_distance(lower(word), lower(w));
+    if (score < best_score) {
+      best_score = score;
+      best = w;
+    }
+  }
+  return best;
+}
+
+std::string keys_of(const std::string& parent) {
+  std::string s;
+  for (const KeySpec& k : key_specs())
+    if (parent_of(k.doc.key) == parent) s += (s.empty() ? "" : ", ") + leaf_of(k.doc.key);
+  return s;
+}
+
+const std::vector<std::string>& initial_kinds() {
+  static const std::vector<std::string> k = {"shell"};
+  return k;
+}
+
+const std::vector<PrecisionName>& precision_names() {
+  static const std::vector<PrecisionName> n = {{"double", Precision::Double},
+                                               {"float", Precision::Float}};
+  return n;
+}
+
+const std::vector<MathName>& math_names() {
+  static const std::vector<MathName> n = {{"portable", MathMode::Portable},
+                                          {"native", MathMode::Native}};
+  return n;
+}
+
+bool valid_device(const std::string& id) {
+  if (id == "auto" || id == "cpu") return true;
+  for (const char* prefix : {"opencl:", "cuda:"}) {
+    const std::string p = prefix;
+    if (id.compare(0, p.size(), p) != 0) continue;
+    const std::string n = id.substr(p.size());
+    return !n.empty() && n.size() <= 9 &&
+           std::all_of(n.begin(), n.end(), [](char c) { return c >= '0' && c <= '9'; });
+  }
+  return false;
+}
+
+}  // namespace arnoldweb::scene_detail
+
+namespace arnoldweb {
+
+const std::vector<SceneKey>& scene_keys() {
+  static const std::vector<SceneKey> keys = [] {
+    std::vector<SceneKey> k;
+    for (const auto& s : scene_detail::key_specs()) k.push_back(s.doc);
+    return k;
+  }();
+  return keys;
+}
+
+}  // namespace arnoldweb
