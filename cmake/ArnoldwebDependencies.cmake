@@ -6,7 +6,10 @@ find_package(nlohmann_json 3.10 REQUIRED)
 find_package(HDF5 REQUIRED COMPONENTS C)
 find_package(OpenMP REQUIRED COMPONENTS CXX)
 find_package(PkgConfig REQUIRED)
-pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)
+# cairo renders the PNG pictures; without it (e.g. on a bare GPU node) the
+# library still runs and writes data, and `arnoldweb render` can draw the
+# pictures later on a machine that has it.
+pkg_check_modules(CAIRO IMPORTED_TARGET cairo)
 pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)
 find_path(RANDOM123_INCLUDE_DIR Random123/philox.h
           DOC "Random123 headers (Debian: librandom123-dev)" REQUIRED)
