@@ -66,8 +66,9 @@ void set_path(toml::table& root, const std::vector<std::string>& parts, const to
   t->insert_or_assign(parts.back(), value);
   const std::string key = dotted.empty() ? parts.back() : dotted + "." + parts.back();
   // This override now gives the key and everything under it.
-  for (auto it = origins.set_of.lower_bound(key + "."); it != origins.set_of.end() &&
-                                                         it->first.compare(0, key.size() + 1, key + ".") == 0;)
+  const std::string below = key + ".";
+  auto it = origins.set_of.lower_bound(below);
+  while (it != origins.set_of.end() && it->first.compare(0, below.size(), below) == 0)
     it = origins.set_of.erase(it);
   origins.set_of[key] = index;
 }
@@ -96,8 +97,9 @@ void apply_overrides(toml::table& root, const std::vector<std::string>& override
     const KeySpec* spec = find_spec(key);
     if (!spec) {
       if (is_section(key)) {
-        problem(key, "is a section; --set sets one of its keys (" + keys_of(key) + "), e.g. --set " +
-                         key + "." + keys_of(key).substr(0, keys_of(key).find(',')) + "=...");
+        const std::string keys = keys_of(key);
+        problem(key, "is a section; --set sets one of its keys (" + keys + "), e.g. --set " +
+                         key + "." + keys.substr(0, keys.find(',')) + "=...");
       } else {
         const std::string near = closest_key(key);
         const std::string section = key.substr(0, key.find('.'));
@@ -105,7 +107,8 @@ void apply_overrides(toml::table& root, const std::vector<std::string>& override
         if (is_section(section)) {
           known = "keys of [" + section + "]: " + keys_of(section);
         } else {
-          for (const std::string& s : sections()) known += (known.empty() ? "sections: " : ", ") + s;
+          for (const std::string& s : sections())
+            known += (known.empty() ? "sections: " : ", ") + s;
         }
         problem(key, "unknown key" +
                          (near.empty() ? std::string(" ") : "; did you mean '" + near + "'? ") +

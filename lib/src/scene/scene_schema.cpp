@@ -69,7 +69,7 @@ std::vector<KeySpec> build() {
   add("ensemble.initial", "string", quoted_list(initial_kinds(), " or "), one_of(initial_kinds()),
       [](const Scene& s) { return toml_string(s.initial); },
       "How initial states are drawn. \"shell\": X uniform on the accessible part of the torus, "
-      "direction of P uniform on the sphere, |P| = sqrt(2 (E - V(X))).");
+      "direction of P uniform on the sphere, speed sqrt(2 (E - V(X))).");
   add("ensemble.chunk", "integer", ">= 0 (0 = automatic)", "an integer >= 0 (0 = automatic)",
       [](const Scene& s) { return std::to_string(s.chunk); },
       "Trajectories per kernel launch; 0 lets the runner choose. Does not change the results.");
@@ -85,7 +85,7 @@ std::vector<KeySpec> build() {
       "integrator.tolerance.");
   add("integrator.tolerance", "float", "> 0 and < 1", "a float greater than 0 and less than 1",
       [](const Scene& s) { return toml_double(s.tolerance); },
-      "Target max |dE| over the ensemble, used with integrator.step = \"auto\".");
+      "Target largest energy error over the ensemble, used with integrator.step = \"auto\".");
   add("integrator.precision", "string", quoted_list(names_of(precision_names()), " or "),
       one_of(names_of(precision_names())),
       [](const Scene& s) { return toml_string(to_string(s.precision)); },
@@ -96,7 +96,7 @@ std::vector<KeySpec> build() {
       "vendor functions where faster; results then differ between backends.");
   add("integrator.allow_unsafe_step", "boolean", "true or false", "true or false",
       [](const Scene& s) { return boolean(s.allow_unsafe_step); },
-      "Run even when the step-size guard refuses the step (h k |p|max >= pi).");
+      "Run even when the step-size guard refuses the step (h k p_max >= pi).");
 
   // [run]
   add("run.average", "float", "> 0", "a finite float greater than 0 (in units of T)",
@@ -128,18 +128,19 @@ std::vector<KeySpec> build() {
       [](const Scene& s) {
         return s.energy_error ? "{ every = " + toml_double(s.energy_every) + " }" : boolean(false);
       },
-      "Track the energy error |dE| of every trajectory. A table sets the sample interval; true "
+      "Track the energy error dE of every trajectory. A table sets the sample interval; true "
       "samples every 1 T.",
       Shape::Composite);
   add("observe.energy_error.every", "float", "> 0",
       "a finite float greater than 0 (sample interval in T)",
       [](const Scene& s) { return toml_double(s.energy_every); },
-      "Interval between |dE| samples, in T; divides run.average.");
+      "Interval between energy-error samples, in T; divides run.average.");
   add("observe.max_energy_error", "float", "> 0, or absent", "a finite float greater than 0",
       [](const Scene& s) {
         return s.max_energy_error ? toml_double(*s.max_energy_error) : std::string();
       },
-      "Flag trajectories whose |dE| exceeds this value; absent: no limit.");
+      "Flag trajectories whose energy error abs(dE) exceeds this value (they are counted in "
+      "the result); implies energy tracking. Absent: no limit.");
   add("observe.initial_states", "boolean", "true or false", "true or false",
       [](const Scene& s) { return boolean(s.initial_states); },
       "Write the initial state of every trajectory.");
