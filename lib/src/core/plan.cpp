@@ -35,8 +35,11 @@ std::int64_t exact_ratio(double x, double unit) {
   return static_cast<std::int64_t>(n);
 }
 
+// A problem with the value of `key`, reported where that value came from: the
+// file position, or the --set override that gave it.
 [[noreturn]] void fail(const Scene& s, const std::string& key, const std::string& message) {
-  SourcePos p = s.pos(key);
+  const SourcePos p = s.pos(key);
+  if (p.set_index > 0) throw SceneError(s.origin(key), 0, 0, key, message);
   throw SceneError(s.file, p.line, p.column, key, message);
 }
 
