@@ -10,7 +10,11 @@ find_package(PkgConfig REQUIRED)
 # library still runs and writes data, and `arnoldweb render` can draw the
 # pictures later on a machine that has it.
 pkg_check_modules(CAIRO IMPORTED_TARGET cairo)
-pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)
+find_path(XXHASH_INCLUDE_DIR xxhash.h DOC "xxHash (Debian: libxxhash-dev)" REQUIRED)
+find_library(XXHASH_LIBRARY xxhash DOC "xxHash (Debian: libxxhash-dev)" REQUIRED)
+add_library(arnoldweb_xxhash INTERFACE IMPORTED)
+target_include_directories(arnoldweb_xxhash INTERFACE ${XXHASH_INCLUDE_DIR})
+target_link_libraries(arnoldweb_xxhash INTERFACE ${XXHASH_LIBRARY})
 find_path(RANDOM123_INCLUDE_DIR Random123/philox.h
           DOC "Random123 headers (Debian: librandom123-dev)" REQUIRED)
 if(NOT EXISTS "${Boost_INCLUDE_DIRS}/boost/compute.hpp")
