@@ -1,13 +1,12 @@
-// arnoldweb: command-line interface.
-//   arnoldweb devices | methods | check SCENE | run SCENE [options]
+// arnoldweb: command-line interface. `arnoldweb --help` lists the commands.
 // Exit codes: 0 success, 1 unexpected error, 2 bad input (usage, scene),
 // 3 output problem, 4 device problem, 130 interrupted (partial result written).
-#include <CLI/CLI.hpp>
-
 #include <iostream>
+#include <memory>
 
-#include "arnoldweb/arnoldweb.hpp"
-#include "commands.hpp"
+#include "arnoldweb/errors.hpp"
+#include "arnoldweb/version.hpp"
+#include "command.hpp"
 
 int main(int argc, char** argv) {
   using namespace arnoldweb::cli;
@@ -19,26 +18,11 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string(ARNOLDWEB_VERSION));
 
-  bool json = false;
-  auto* devices = app.add_subcommand("devices", "List the devices: id, name, vendor, fp64, compute units");
-  devices->add_flag("--json", json, "Print JSON");
-
-  app.add_subcommand("methods", "List the integrators: order, force evaluations per step, stability");
-
-  RunArgs args;
-  auto add_scene_options = [&](CLI::App* c) {
-    c->add_option("scene", args.scene, "Scene file (TOML)")->required();
-    c->add_option("--device,-d", args.device, "Device id (cpu, opencl:N, cuda:N, auto)");
-    c->add_option("--set,-s", args.sets, "Override a scene key: --set integrator.step=0.005")
-        ->allow_extra_args(false);
-    c->add_option("--out,-o", args.out, "Output directory (overrides output.dir)");
-  };
-  auto* check = app.add_subcommand("check", "Validate a scene and print the plan");
-  add_scene_options(check);
-  auto* run = app.add_subcommand("run", "Run a scene and write its outputs");
-  add_scene_options(run);
-  run->add_flag("--force,-f", args.force, "Replace an existing output directory");
-  run->add_flag("--quiet,-q", args.quiet, "Print nothing but errors");
+  Action action;
+  add_devices_command(app, action);
+  add_methods_command(app, action);
+  add_check_command(app, action);
+  add_run_command(app, action);
 
   try {
     app.parse(argc, argv);
@@ -47,10 +31,7 @@ int main(int argc, char** argv) {
     return rc == 0 ? 0 : 2;
   }
   try {
-    if (*devices) return cmd_devices(json);
-    if (app.got_subcommand("methods")) return cmd_methods();
-    if (*check) return cmd_check(args);
-    if (*run) return cmd_run(args);
+    return action ? action() : 2;
   } catch (const arnoldweb::Error& e) {
     std::cerr << "arnoldweb: error: " << e.what() << "\n";
     return e.exit_code();
@@ -58,5 +39,4 @@ int main(int argc, char** argv) {
     std::cerr << "arnoldweb: unexpected error: " << e.what() << "\n";
     return 1;
   }
-  return 1;
 }
