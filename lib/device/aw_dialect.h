@@ -237,4 +237,99 @@ AW_FN lreal aw_load_lanes(const real* a) {
 #endif
 #define AW_RINT_SMALL(x) (((x) + AW_ROUND_MAGIC) - AW_ROUND_MAGIC)
 
+/* ------------------------------------------------------------ bit patterns
+ * `lbits`: an unsigned integer lane of the width of `real`. AW_AS_BITS and
+ * AW_FROM_BITS reinterpret (never convert), so integer work on them is exact
+ * and leaves the floating-point pipes free (on GPUs the FP64 pipe is the
+ * bottleneck). The sum t = x + AW_ROUND_MAGIC of AW_RINT_SMALL holds
+ * rint(x) in its low bits, two's complement: AW_MAGIC_TO_INT(t) reads it as
+ * an integer lane (lint) without a float-to-integer conversion. */
+#ifdef AW_FLOAT
+typedef aw_u32 aw_bits_e; /* one element of lbits */
+#else
+typedef aw_u64 aw_bits_e;
+#endif
+#if defined(AW_OPENCL)
+#define AW_BITS_C(x) ((aw_bits_e)(x##UL))
+#else
+#define AW_BITS_C(x) ((aw_bits_e)(x##ULL))
+#endif
+#ifdef AW_FLOAT
+#define AW_ROUND_MAGIC_BITS AW_BITS_C(0x4B400000)
+#define AW_BIT1_TO_SIGN 30 /* shift that moves bit 1 to the sign bit */
+#else
+#define AW_ROUND_MAGIC_BITS AW_BITS_C(0x4338000000000000)
+#define AW_BIT1_TO_SIGN 62
+#endif
+
+#if AW_LANES == 1 && defined(AW_OPENCL)
+#ifdef AW_FLOAT
+typedef uint lbits;
+#define AW_AS_BITS(x) as_uint(x)
+#define AW_FROM_BITS(b) as_float(b)
+#define AW_MAGIC_TO_INT(t) ((lint)as_int(AW_AS_BITS(t) - AW_ROUND_MAGIC_BITS))
+#else
+typedef ulong lbits;
+#define AW_AS_BITS(x) as_ulong(x)
+#define AW_FROM_BITS(b) as_double(b)
+#define AW_MAGIC_TO_INT(t) as_long(AW_AS_BITS(t) - AW_ROUND_MAGIC_BITS)
+#endif
+#elif AW_LANES == 1 && defined(AW_CUDA)
+#ifdef AW_FLOAT
+typedef unsigned int lbits;
+#define AW_AS_BITS(x) ((lbits)__float_as_int(x))
+#define AW_FROM_BITS(b) __int_as_float((int)(b))
+#define AW_MAGIC_TO_INT(t) ((lint)(int)(AW_AS_BITS(t) - AW_ROUND_MAGIC_BITS))
+#else
+typedef unsigned long long lbits;
+#define AW_AS_BITS(x) ((lbits)__double_as_longlong(x))
+#define AW_FROM_BITS(b) __longlong_as_double((long long)(b))
+#define AW_MAGIC_TO_INT(t) ((lint)(AW_AS_BITS(t) - AW_ROUND_MAGIC_BITS))
+#endif
+#elif AW_LANES == 1
+#ifdef AW_FLOAT
+typedef std::uint32_t lbits;
+#define AW_MAGIC_TO_INT(t) ((lint)(std::int32_t)(AW_AS_BITS(t) - AW_ROUND_MAGIC_BITS))
+#else
+typedef std::uint64_t lbits;
+#define AW_MAGIC_TO_INT(t) ((lint)(AW_AS_BITS(t) - AW_ROUND_MAGIC_BITS))
+#endif
+AW_FN lbits aw_as_bits(real x) {
+  lbits b;
+  std::memcpy(&b, &x, sizeof b);
+  return b;
+}
+AW_FN real aw_from_bits(lbits b) {
+  real x;
+  std::memcpy(&x, &b, sizeof x);
+  return x;
+}
+#define AW_AS_BITS(x) aw_as_bits(x)
+#define AW_FROM_BITS(b) aw_from_bits(b)
+#elif defined(AW_CPP)
+#ifdef AW_FLOAT
+typedef std::uint32_t lbits __attribute__((vector_size(4 * AW_LANES)));
+typedef std::int32_t aw_lsbits __attribute__((vector_size(4 * AW_LANES)));
+#define AW_MAGIC_TO_INT(t) __builtin_convertvector((aw_lsbits)(AW_AS_BITS(t) - AW_ROUND_MAGIC_BITS), lint)
+#else
+typedef std::uint64_t lbits __attribute__((vector_size(8 * AW_LANES)));
+#define AW_MAGIC_TO_INT(t) ((lint)(AW_AS_BITS(t) - AW_ROUND_MAGIC_BITS))
+#endif
+#define AW_AS_BITS(x) ((lbits)(x))
+#define AW_FROM_BITS(b) ((lreal)(b))
+#else /* OpenCL vectors */
+#ifdef AW_FLOAT
+typedef AW_CAT(uint, AW_LANES) lbits;
+#define AW_AS_BITS(x) AW_CAT(as_uint, AW_LANES)(x)
+#define AW_FROM_BITS(b) AW_CAT(as_float, AW_LANES)(b)
+#define AW_MAGIC_TO_INT(t) \
+  AW_CAT(convert_long, AW_LANES)(AW_CAT(as_int, AW_LANES)(AW_AS_BITS(t) - AW_ROUND_MAGIC_BITS))
+#else
+typedef AW_CAT(ulong, AW_LANES) lbits;
+#define AW_AS_BITS(x) AW_CAT(as_ulong, AW_LANES)(x)
+#define AW_FROM_BITS(b) AW_CAT(as_double, AW_LANES)(b)
+#define AW_MAGIC_TO_INT(t) AW_CAT(as_long, AW_LANES)(AW_AS_BITS(t) - AW_ROUND_MAGIC_BITS)
+#endif
+#endif
+
 #endif /* AW_DIALECT_H */

@@ -24,15 +24,22 @@
 #define AW_PIO2_LO 6.123233995736766e-17
 #endif
 
-/* Quadrant bookkeeping shared by both precisions: given k = rint(4u) and the
- * kernel values sr = sin(r), cr = cos(r), return sin and cos of k pi/2 + r. */
-#define AW_QUADRANT_SELECT(k, sr, cr, s, c)                                        \
-  do {                                                                           \
-    lreal aw_m_ = (k) - AW_R(4.0) * AW_RINT_SMALL((k) * AW_R(0.25)); /* -2..2 */ \
-    lreal aw_ss_ = AW_SELECT((sr), (cr), AW_FABS(aw_m_) == AW_R(1.0));           \
-    lreal aw_cc_ = AW_SELECT((cr), (sr), AW_FABS(aw_m_) == AW_R(1.0));           \
-    *(s) = AW_SELECT(aw_ss_, -aw_ss_, (aw_m_ < AW_R(-0.5)) | (aw_m_ > AW_R(1.5))); \
-    *(c) = AW_SELECT(aw_cc_, -aw_cc_, (aw_m_ > AW_R(0.5)) | (aw_m_ < AW_R(-1.5))); \
+/* Quadrant bookkeeping shared by both precisions: given t = 4u + AW_ROUND_MAGIC
+ * (the rounding sum that gives k = rint(4u) = t - AW_ROUND_MAGIC) and the
+ * kernel values sr = sin(r), cr = cos(r), return sin and cos of k pi/2 + r.
+ * q = k mod 4 is read from the low bits of t (two's complement, exact), and
+ * the signs are flipped by XOR on the sign bit: integer work only, no
+ * floating-point compare, select or negation (bitwise the same results as
+ * comparing m = k - 4 rint(k/4) in floating point). */
+#define AW_QUADRANT_SELECT(t, sr, cr, s, c)                                                   \
+  do {                                                                                        \
+    lbits aw_q_ = AW_AS_BITS(t);                                                              \
+    lbits aw_neg_s_ = (aw_q_ & AW_BITS_C(2)) << AW_BIT1_TO_SIGN;                /* q = 2, 3 */ \
+    lbits aw_neg_c_ = ((aw_q_ + AW_BITS_C(1)) & AW_BITS_C(2)) << AW_BIT1_TO_SIGN; /* q = 1, 2 */ \
+    lreal aw_ss_ = AW_SELECT((sr), (cr), (aw_q_ & AW_BITS_C(1)) != AW_BITS_C(0));              \
+    lreal aw_cc_ = AW_SELECT((cr), (sr), (aw_q_ & AW_BITS_C(1)) != AW_BITS_C(0));              \
+    *(s) = AW_FROM_BITS(AW_AS_BITS(aw_ss_) ^ aw_neg_s_);                                      \
+    *(c) = AW_FROM_BITS(AW_AS_BITS(aw_cc_) ^ aw_neg_c_);                                      \
   } while (0)
 
 #if defined(AW_NATIVE_MATH)
@@ -62,7 +69,8 @@ AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) {
 
 AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) {
   lreal x4 = AW_R(4.0) * u;            /* exact */
-  lreal k = AW_RINT_SMALL(x4);         /* nearest integer, ties to even */
+  lreal t = x4 + AW_ROUND_MAGIC;       /* k = t - magic: nearest integer, ties to even */
+  lreal k = t - AW_ROUND_MAGIC;
   lreal f = x4 - k;                    /* exact, in [-1/2, 1/2] */
   lreal r = AW_FMA(f, AW_LSPLAT(AW_PIO2_HI), f * AW_PIO2_LO); /* f * pi/2, one rounding */
   lreal z = r * r;
@@ -91,7 +99,7 @@ AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) {
   lreal w = 1.0 - hz;
   lreal cr = w + AW_FMA(z * z, pc, (1.0 - w) - hz);
 #endif
-  AW_QUADRANT_SELECT(k, sr, cr, s, c);
+  AW_QUADRANT_SELECT(t, sr, cr, s, c);
 }
 #endif /* AW_NATIVE_MATH */
 

@@ -34,17 +34,18 @@ AW_FN void aw_kick(aw_lstate* s, real k) {
   s->pz = AW_FMA(kk, s->fz, s->pz);
 }
 
-/* Whole turns move from u into the winding counts; u - rint(u) is exact. */
+/* Whole turns move from u into the winding counts; u - rint(u) is exact. The
+ * integer turns are read from the bits of the rounding sum (no conversion). */
 AW_FN void aw_wrap(aw_lstate* s) {
-  lreal kx = AW_RINT_SMALL(s->ux);
-  lreal ky = AW_RINT_SMALL(s->uy);
-  lreal kz = AW_RINT_SMALL(s->uz);
-  s->ux = s->ux - kx;
-  s->uy = s->uy - ky;
-  s->uz = s->uz - kz;
-  s->wx += AW_LANE_TO_INT(kx);
-  s->wy += AW_LANE_TO_INT(ky);
-  s->wz += AW_LANE_TO_INT(kz);
+  lreal tx = s->ux + AW_ROUND_MAGIC;
+  lreal ty = s->uy + AW_ROUND_MAGIC;
+  lreal tz = s->uz + AW_ROUND_MAGIC;
+  s->ux = s->ux - (tx - AW_ROUND_MAGIC);
+  s->uy = s->uy - (ty - AW_ROUND_MAGIC);
+  s->uz = s->uz - (tz - AW_ROUND_MAGIC);
+  s->wx += AW_MAGIC_TO_INT(tx);
+  s->wy += AW_MAGIC_TO_INT(ty);
+  s->wz += AW_MAGIC_TO_INT(tz);
 }
 
 /* Advance by nsteps steps. On entry and on exit, (u, p) are synchronised and
