@@ -32,5 +32,6 @@ void add_devices_command(CLI::App& app, Action& action);
 void add_methods_command(CLI::App& app, Action& action);
 void add_check_command(CLI::App& app, Action& action);
 void add_run_command(CLI::App& app, Action& action);
+void add_keys_command(CLI::App& app, Action& action);
 
 }  // namespace arnoldweb::cli

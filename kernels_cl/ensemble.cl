@@ -15,7 +15,7 @@ __kernel void aw_ensemble(ulong chunk_first, ulong chunk_end, __constant real* r
   real emax = 0, esum = 0;
   if (first < chunk_end) {
     aw_outputs out = {map, counters, initial_r, final_r, final_i};
-    aw_ensemble_item(AW_FEATURES, AW_STAGES, AW_KICK_FIRST, first, chunk_end, chunk_first, rp,
+    aw_ensemble_item(AW_FEATURES, AW_STAGES, AW_KICK_FIRST, AW_INITIAL, first, chunk_end, chunk_first, rp,
                      ip, out, &emax, &esum);
   }
   aw_group_reduce(scratch, (int)get_local_id(0), (int)get_local_size(0), get_group_id(0), emax,

@@ -17,7 +17,7 @@ extern "C" __global__ void aw_ensemble(aw_u64 chunk_first, aw_u64 chunk_end, con
   real emax = 0, esum = 0;
   if (first < chunk_end) {
     aw_outputs out = {map, counters, initial_r, final_r, final_i};
-    aw_ensemble_item(AW_FEATURES, AW_STAGES, AW_KICK_FIRST, first, chunk_end, chunk_first, rp,
+    aw_ensemble_item(AW_FEATURES, AW_STAGES, AW_KICK_FIRST, AW_INITIAL, first, chunk_end, chunk_first, rp,
                      ip, out, &emax, &esum);
   }
   aw_group_reduce(scratch, (int)threadIdx.x, (int)blockDim.x, blockIdx.x, emax, esum,

@@ -25,7 +25,7 @@ Plan plan_for(double energy, double step = 0.01) {
 
 core_d::aw_lstate initial(const Plan& p, std::uint64_t index, bool* ok) {
   core_d::aw_lstate st;
-  *ok = core_d::aw_initial_shell(&st, index, p.rp.data(), p.ip.data()) != 0.0;
+  *ok = core_d::aw_initial_state(&st, AW_INITIAL_SHELL, index, p.rp.data(), p.ip.data()) != 0.0;
   return st;
 }
 

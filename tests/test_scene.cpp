@@ -62,6 +62,30 @@ void check_same(const Scene& a, const Scene& b) {
   CHECK(a.final_states == b.final_states);
   CHECK(a.output_dir == b.output_dir);
   CHECK(a.images == b.images);
+  CHECK(a.cap_center == b.cap_center);
+  CHECK(a.cap_radius == b.cap_radius);
+  CHECK(a.box_lon == b.box_lon);
+  CHECK(a.box_lat == b.box_lat);
+  CHECK(a.gaussian_mean == b.gaussian_mean);
+  CHECK(a.gaussian_sigma == b.gaussian_sigma);
+  CHECK(a.zoom == b.zoom);
+  if (a.zoom) {
+    CHECK(a.zoom_center == b.zoom_center);
+    CHECK(a.zoom_width == b.zoom_width);
+    CHECK(a.zoom_resolution == b.zoom_resolution);
+  }
+  CHECK(a.confine == b.confine);
+  if (a.confine) {
+    CHECK(a.confine_center == b.confine_center);
+    CHECK(a.confine_width == b.confine_width);
+  }
+  CHECK(a.frame_times == b.frame_times);
+  REQUIRE(a.panels.size() == b.panels.size());
+  for (std::size_t i = 0; i < a.panels.size(); ++i) {
+    CHECK(a.panels[i].name == b.panels[i].name);
+    CHECK(a.panels[i].title == b.panels[i].title);
+    CHECK(a.panels[i].sets == b.panels[i].sets);
+  }
 }
 
 // One bad value: the key it names, where, and parts of the message.
@@ -100,7 +124,29 @@ const char* kFullScene =
     "final_states = true\n"                   // 24
     "[output]\n"                              // 25
     "dir = \"runs/E400 \\\"x\\\"\"\n"         // 26
-    "images = false\n";                       // 27
+    "images = false\n"                        // 27
+    "[ensemble.cap]\n"                        // 28
+    "center = [10, -20.5]\n"                  // 29
+    "radius = 3.5\n"                          // 30
+    "[ensemble.box]\n"                        // 31
+    "lon = [-10.0, 20.0]\n"                   // 32
+    "lat = [60, 70]\n"                        // 33
+    "[ensemble.gaussian]\n"                   // 34
+    "mean = [3.873, 3.873]\n"                 // 35
+    "sigma = [0.01, 0.02]\n"                  // 36
+    "[observe.zoom]\n"                        // 37
+    "center = [45, 35.26]\n"                  // 38
+    "width = 8.0\n"                           // 39
+    "resolution = 1024\n"                     // 40
+    "[observe.confine]\n"                     // 41
+    "center = [45, 35.26]\n"                  // 42
+    "width = 8.5\n"                           // 43
+    "[observe.frames]\n"                      // 44
+    "times = [0, 100, 1e3, 1e4]\n"            // 45
+    "[[panel]]\n"                             // 46
+    "name = \"b\"\n"                          // 47
+    "title = \"zoom (b)\"\n"                  // 48
+    "set = [\"ensemble.initial=cap\"]\n";     // 49
 
 }  // namespace
 
@@ -150,6 +196,23 @@ TEST_SUITE("scene") {
     CHECK(s.final_states);
     CHECK(s.output_dir == "runs/E400 \"x\"");
     CHECK_FALSE(s.images);
+    CHECK(s.cap_center == std::array<double, 2>{10, -20.5});
+    CHECK(s.cap_radius == 3.5);
+    CHECK(s.box_lon == std::array<double, 2>{-10, 20});
+    CHECK(s.box_lat == std::array<double, 2>{60, 70});
+    CHECK(s.gaussian_mean == std::array<double, 2>{3.873, 3.873});
+    CHECK(s.gaussian_sigma == std::array<double, 2>{0.01, 0.02});
+    CHECK(s.zoom);
+    CHECK(s.zoom_center == std::array<double, 2>{45, 35.26});
+    CHECK(s.zoom_width == 8.0);
+    CHECK(s.zoom_resolution == 1024);
+    CHECK(s.confine);
+    CHECK(s.confine_width == 8.5);
+    CHECK(s.frame_times == std::vector<double>{0, 100, 1e3, 1e4});
+    REQUIRE(s.panels.size() == 1);
+    CHECK(s.panels[0].name == "b");
+    CHECK(s.panels[0].title == "zoom (b)");
+    CHECK(s.panels[0].sets == std::vector<std::string>{"ensemble.initial=cap"});
 
     // Every key of the table was read and its position recorded.
     for (const auto& k : arnoldweb::scene_keys()) {
@@ -246,8 +309,20 @@ TEST_SUITE("scene") {
          {"must be an integer", "got float 1e+06", "write it as an integer: 1000000"}},
         {"[ensemble]\ntrajectories = 2.5\n", "ensemble.trajectories", 2, 16, {"got float 2.5"}},
         {"[ensemble]\nseed = -1\n", "ensemble.seed", 2, 8, {"must be an integer >= 0", "got -1"}},
-        {"[ensemble]\ninitial = \"box\"\n", "ensemble.initial", 2, 11,
-         {"must be \"shell\"", "got \"box\""}},
+        {"[ensemble]\ninitial = \"disc\"\n", "ensemble.initial", 2, 11,
+         {"must be one of \"shell\", \"cap\", \"box\", \"gaussian\"", "got \"disc\""}},
+        {"[ensemble]\ncap = { center = [10, 95], radius = 3 }\n", "ensemble.cap.center", 2, 18,
+         {"latitude from -90 to 90", "(2 values)"}},
+        {"[ensemble]\nbox = { lon = [10, 5], lat = [0, 1] }\n", "ensemble.box.lon", 2, 15,
+         {"from < to"}},
+        {"[ensemble]\ngaussian = { mean = [1, 2, 3] }\n", "ensemble.gaussian.mean", 2, 21,
+         {"an array [p_x, p_y]", "(3 values)"}},
+        {"[observe]\nzoom = { width = 200 }\n", "observe.zoom.width", 2, 18, {"less than 120"}},
+        {"[observe]\nzoom = true\n", "observe.zoom", 2, 8, {"give the table"}},
+        {"[observe]\nframes = { times = [0, 10, 5] }\n", "observe.frames.times", 2, 20,
+         {"increasing"}},
+        {"[[panel]]\nname = \"a b\"\n", "panel.name", 2, 8, {"letters, digits"}},
+
         {"[ensemble]\nchunk = -1\n", "ensemble.chunk", 2, 9, {"must be an integer >= 0"}},
         // [integrator]
         {"[integrator]\nmethod = \"yoshida7\"\n", "integrator.method", 2, 10,
@@ -576,7 +651,7 @@ TEST_SUITE("scene") {
 
   TEST_CASE("scene_keys: complete, documented, and each key is read") {
     const auto& keys = arnoldweb::scene_keys();
-    REQUIRE(keys.size() == 23);
+    REQUIRE(keys.size() == 44);
     const Scene d;
     const std::string text = d.to_toml();
     for (const auto& k : keys) {
@@ -594,7 +669,12 @@ TEST_SUITE("scene") {
       // Setting the key on its own (to its default) is accepted and recorded.
       if (k.default_value != "(not set)") {
         const Scene s = parse("", {k.key + "=" + k.default_value});
-        check_same(s, d);
+        // a part of a table that is off by default turns the table on
+        const bool turns_on = k.key.rfind("observe.zoom.", 0) == 0 || k.key.rfind("observe.confine.", 0) == 0;
+        if (turns_on)
+          CHECK((s.zoom || s.confine));
+        else
+          check_same(s, d);
         CHECK(s.pos(k.key).set_index == 1);
       }
     }

@@ -1,13 +1,22 @@
 /* arnoldweb portable device core: initial conditions on the energy shell.
  *
- * "shell": X uniform on the torus, the direction of P uniform on the sphere,
- * |P| = sqrt(2 (E - V(X))). Positions where V(X) >= E are not accessible and
- * are rejected; each trajectory tries at most AW_I_MAX_ATTEMPTS positions
- * (the host refuses energies whose accessible fraction makes failure likely)
- * and reports failure through the returned lane mask.
+ * X is uniform on the accessible part of the torus (V(X) < E). Positions
+ * where the state cannot have energy E are rejected; each trajectory tries at
+ * most AW_I_MAX_ATTEMPTS times (the host refuses energies whose accessible
+ * fraction makes failure likely) and reports failure through the returned
+ * lane mask. The momentum, by kind (AW_INITIAL_*):
+ *   shell:    direction uniform on the sphere, |P| = sqrt(2 (E - V(X)))
+ *   cap:      direction uniform in a spherical cap, |P| as above
+ *   box:      direction uniform in a longitude/latitude box, |P| as above
+ *   gaussian: p_x, p_y normal (Box-Muller), drawn once per trajectory; X is drawn
+ *             until p_z^2 = 2 (E - V(X)) - p_x^2 - p_y^2 > 0, p_z with a random
+ *             sign. So p_x, p_y are exactly Gaussian and X is uniform on the
+ *             part of the torus that this momentum can reach.
  *
- * Random draws per attempt (Philox counter = (index, attempt, draw)):
- *   draw 0: u_x, u_y   draw 1: u_z, cos(theta)   draw 2: phi (turns)
+ * Random draws (Philox counter = (index, attempt, draw)):
+ *   draw 0: u_x, u_y   draw 1: u_z, a   draw 2: b, c   (every attempt)
+ *   a, b: the direction; gaussian: (index, 0, 3): the two normals' uniforms,
+ *   (index, 0, 4): the sign of p_z.
  */
 #ifndef AW_INITIAL_H
 #define AW_INITIAL_H
@@ -17,14 +26,29 @@
 #include "aw_rng.h"
 
 /* Fills s (force not yet computed) for the lanes first .. first+AW_LANES-1;
- * returns 1 in every lane that found an accessible state, 0 elsewhere. */
-AW_FN lreal aw_initial_shell(aw_lstate* s, aw_u64 first, AW_CONSTANT real* rp,
+ * returns 1 in every lane that found a state, 0 elsewhere. */
+AW_FN lreal aw_initial_state(aw_lstate* s, int kind, aw_u64 first, AW_CONSTANT real* rp,
                              AW_CONSTANT aw_i64* ip) {
   const aw_u64 seed = (aw_u64)ip[AW_I_SEED];
   const int max_attempts = (int)ip[AW_I_MAX_ATTEMPTS];
   const real energy = rp[AW_P_ENERGY];
+  AW_CONSTANT real* q = rp + AW_P_INIT;
   real r0[AW_LANES], r1[AW_LANES], r2[AW_LANES], r3[AW_LANES], r4[AW_LANES], r5[AW_LANES];
   lreal accepted = AW_LSPLAT(AW_R(0.0));
+  lreal gx = AW_LSPLAT(AW_R(0.0)), gy = AW_LSPLAT(AW_R(0.0)), gsign = AW_LSPLAT(AW_R(1.0));
+  if (kind == AW_INITIAL_GAUSSIAN) {
+    /* the momentum's Gaussian part, once per trajectory (Box-Muller) */
+    for (int j = 0; j < AW_LANES; ++j) {
+      aw_uniform2(seed, first + (aw_u64)j, 0u, 3u, &r0[j], &r1[j]);
+      aw_uniform2(seed, first + (aw_u64)j, 0u, 4u, &r2[j], &r3[j]);
+      r0[j] = AW_SQRT(AW_R(-2.0) * aw_log(AW_R(1.0) - r0[j])); /* 1 - U in (0, 1] */
+    }
+    lreal radius = AW_LOAD_LANES(r0), sb, cb;
+    aw_sincos2pi(AW_LOAD_LANES(r1), &sb, &cb);
+    gx = AW_FMA(AW_LSPLAT(q[2]) * radius, cb, AW_LSPLAT(q[0]));
+    gy = AW_FMA(AW_LSPLAT(q[3]) * radius, sb, AW_LSPLAT(q[1]));
+    gsign = AW_SELECT(AW_LSPLAT(AW_R(1.0)), AW_LSPLAT(AW_R(-1.0)), AW_LOAD_LANES(r2) < AW_R(0.5));
+  }
   s->ux = s->uy = s->uz = AW_LSPLAT(AW_R(0.0));
   s->px = s->py = s->pz = AW_LSPLAT(AW_R(0.0));
   s->wx = s->wy = s->wz = AW_ISPLAT(0);
@@ -39,20 +63,57 @@ AW_FN lreal aw_initial_shell(aw_lstate* s, aw_u64 first, AW_CONSTANT real* rp,
     lreal uy = AW_LOAD_LANES(r1) - AW_R(0.5);
     lreal uz = AW_LOAD_LANES(r2) - AW_R(0.5);
     lreal ke = energy - aw_potential(ux, uy, uz); /* kinetic energy left */
-    lreal ct = AW_R(2.0) * AW_LOAD_LANES(r3) - AW_R(1.0);
-    lreal st = AW_SQRT((AW_R(1.0) - ct) * (AW_R(1.0) + ct));
-    lreal sphi, cphi;
-    aw_sincos2pi(AW_LOAD_LANES(r4), &sphi, &cphi);
-    lreal pm = AW_SQRT(AW_R(2.0) * AW_SELECT(AW_LSPLAT(AW_R(0.0)), ke, ke > AW_R(0.0)));
-    lreal pt = pm * st;
-    /* take the candidate where it is accessible and nothing was taken yet */
-#define AW_TAKE_ (ke > AW_R(0.0)) & (accepted == AW_R(0.0))
+    lreal a = AW_LOAD_LANES(r3), b = AW_LOAD_LANES(r4);
+    lreal px, py, pz, ok;
+    if (kind == AW_INITIAL_GAUSSIAN) {
+      px = gx;
+      py = gy;
+      lreal pz2 = AW_R(2.0) * ke - AW_FMA(py, py, px * px);
+      pz = gsign * AW_SQRT(AW_SELECT(AW_LSPLAT(AW_R(0.0)), pz2, pz2 > AW_R(0.0)));
+      ok = AW_SELECT(AW_LSPLAT(AW_R(0.0)), AW_LSPLAT(AW_R(1.0)), pz2 > AW_R(0.0));
+    } else {
+      /* a unit direction (dx, dy, dz) */
+      lreal dx, dy, dz;
+      if (kind == AW_INITIAL_BOX) {
+        lreal sl = AW_FMA(a, AW_LSPLAT(q[3]), AW_LSPLAT(q[2])); /* sin(latitude) */
+        lreal cl = AW_SQRT((AW_R(1.0) - sl) * (AW_R(1.0) + sl));
+        lreal slon, clon;
+        aw_sincos2pi(AW_FMA(b, AW_LSPLAT(q[1]), AW_LSPLAT(q[0])), &slon, &clon);
+        dx = cl * clon;
+        dy = cl * slon;
+        dz = sl;
+      } else {
+        /* shell: the whole sphere; cap: cos(theta) in [cos(radius), 1] about c */
+        lreal ct = (kind == AW_INITIAL_CAP) ? AW_R(1.0) - a * (AW_R(1.0) - q[9])
+                                            : AW_R(2.0) * a - AW_R(1.0);
+        lreal st = AW_SQRT((AW_R(1.0) - ct) * (AW_R(1.0) + ct));
+        lreal sphi, cphi;
+        aw_sincos2pi(b, &sphi, &cphi);
+        if (kind == AW_INITIAL_CAP) {
+          lreal t1 = st * cphi, t2 = st * sphi;
+          dx = AW_FMA(ct, AW_LSPLAT(q[0]), AW_FMA(t1, AW_LSPLAT(q[3]), t2 * q[6]));
+          dy = AW_FMA(ct, AW_LSPLAT(q[1]), AW_FMA(t1, AW_LSPLAT(q[4]), t2 * q[7]));
+          dz = AW_FMA(ct, AW_LSPLAT(q[2]), AW_FMA(t1, AW_LSPLAT(q[5]), t2 * q[8]));
+        } else {
+          dx = st * cphi;
+          dy = st * sphi;
+          dz = ct;
+        }
+      }
+      lreal pm = AW_SQRT(AW_R(2.0) * AW_SELECT(AW_LSPLAT(AW_R(0.0)), ke, ke > AW_R(0.0)));
+      px = pm * dx;
+      py = pm * dy;
+      pz = pm * dz;
+      ok = AW_SELECT(AW_LSPLAT(AW_R(0.0)), AW_LSPLAT(AW_R(1.0)), ke > AW_R(0.0));
+    }
+    /* take the candidate where it is valid and nothing was taken yet */
+#define AW_TAKE_ (ok != AW_R(0.0)) & (accepted == AW_R(0.0))
     s->ux = AW_SELECT(s->ux, ux, AW_TAKE_);
     s->uy = AW_SELECT(s->uy, uy, AW_TAKE_);
     s->uz = AW_SELECT(s->uz, uz, AW_TAKE_);
-    s->px = AW_SELECT(s->px, pt * cphi, AW_TAKE_);
-    s->py = AW_SELECT(s->py, pt * sphi, AW_TAKE_);
-    s->pz = AW_SELECT(s->pz, pm * ct, AW_TAKE_);
+    s->px = AW_SELECT(s->px, px, AW_TAKE_);
+    s->py = AW_SELECT(s->py, py, AW_TAKE_);
+    s->pz = AW_SELECT(s->pz, pz, AW_TAKE_);
     accepted = AW_SELECT(accepted, AW_LSPLAT(AW_R(1.0)), AW_TAKE_);
 #undef AW_TAKE_
     if (AW_ALL(accepted != AW_R(0.0))) break;

@@ -103,6 +103,38 @@ AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) {
 }
 #endif /* AW_NATIVE_MATH */
 
+/* ------------------------------------------------------------ scalar log */
+
+/* Natural logarithm of a positive finite x (fdlibm e_log.c structure:
+ * x = 2^k m with m in [sqrt(1/2), sqrt(2)), log(m) from s = f / (2 + f)).
+ * Used for Gaussian initial states (Box-Muller). */
+AW_FN real aw_log(real x) {
+  int e;
+  real m = AW_FREXP(x, &e); /* exact: x = m 2^e, m in [1/2, 1) */
+  if (m < AW_R(0.70710678118654752440)) {
+    m = AW_R(2.0) * m;
+    e -= 1;
+  }
+  const real f = m - AW_R(1.0);
+  const real s = f / (AW_R(2.0) + f);
+  const real z = s * s;
+  const real w = z * z;
+  const real t1 = w * AW_FMA(w, AW_FMA(w, AW_R(1.531383769920937332e-01), AW_R(2.222219843214978396e-01)),
+                             AW_R(3.999999999940941908e-01));
+  const real t2 = z * AW_FMA(w, AW_FMA(w, AW_FMA(w, AW_R(1.479819860511658591e-01), AW_R(1.818357216161805012e-01)),
+                                       AW_R(2.857142874366239149e-01)),
+                             AW_R(6.666666666666735130e-01));
+  const real r = t2 + t1;
+  const real hfsq = AW_R(0.5) * f * f;
+  const real k = (real)e;
+#ifdef AW_FLOAT
+  const real ln2_hi = 6.93359375e-01f, ln2_lo = -2.12194440e-04f;
+#else
+  const real ln2_hi = 6.93147180369123816490e-01, ln2_lo = 1.90821492927058770002e-10;
+#endif
+  return k * ln2_hi - ((hfsq - (s * (hfsq + r) + k * ln2_lo)) - f);
+}
+
 /* ------------------------------------------------------------ scalar atan2 */
 
 /* atan(t) for 0 <= t <= 1. */

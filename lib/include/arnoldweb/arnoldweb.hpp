@@ -9,4 +9,5 @@
 #include "arnoldweb/result.hpp"
 #include "arnoldweb/run.hpp"
 #include "arnoldweb/scene.hpp"
+#include "arnoldweb/sphere.hpp"
 #include "arnoldweb/version.hpp"

@@ -56,6 +56,10 @@ struct Plan {
   double force_evaluations = 0;         // trajectory_steps * stages
 
   std::uint64_t npix = 0;               // 12 nside^2 (0 without a velocity map)
+  int frames = 1;                       // velocity maps (> 1: a time series)
+  std::vector<std::int64_t> frame_bounds;  // frame k holds windows [b_k, b_k+1)
+  int zoom_resolution = 0;              // R of the R x R zoom histogram (0: none)
+  std::uint64_t hist_size = 0;          // counts on the device: frames * npix + R^2
   double accessible_fraction = 1;       // of the torus, for the initial states
   StepGuard guard;
   std::vector<std::string> warnings;

@@ -32,11 +32,14 @@ struct Result {
   std::uint64_t flagged_energy = 0;
   std::uint64_t flagged_initial = 0;
   std::uint64_t flagged() const { return flagged_nonfinite + flagged_energy + flagged_initial; }
+  std::uint64_t left_region = 0;   // not binned: left the confinement region (not an error)
   bool interrupted = false;
 
   EnergyStats energy;
   int nside = 0;
-  std::vector<std::uint64_t> map;  // RING order, 12 nside^2 counts (windows binned)
+  std::vector<std::uint64_t> map;  // RING order, 12 nside^2 counts (windows binned; all frames)
+  std::vector<std::vector<std::uint64_t>> frames;  // one map per frame (observe.frames)
+  std::vector<std::uint64_t> zoom;  // R x R counts, row y then column x (observe.zoom)
 
   // State records of completed trajectories, in index order (when asked for):
   // AW_STATE_REALS reals (u_x, u_y, u_z in turns, p_x, p_y, p_z) and

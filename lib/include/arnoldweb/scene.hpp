@@ -3,6 +3,7 @@
 // file, line, column and key of the first problem.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -35,6 +36,14 @@ struct Scene {
   std::uint64_t seed = 1;
   std::string initial = "shell";
   std::uint64_t chunk = 0;  // trajectories per launch; 0 = chosen by the runner
+  // Parameters of the non-uniform initial kinds (directions as longitude and
+  // latitude of the momentum in degrees: P ~ (cos lat cos lon, cos lat sin lon, sin lat)).
+  std::array<double, 2> cap_center = {45.0, 0.0};  // ensemble.cap.center
+  double cap_radius = 5.0;                          // ensemble.cap.radius, degrees
+  std::array<double, 2> box_lon = {40.0, 50.0};    // ensemble.box.lon, degrees
+  std::array<double, 2> box_lat = {-5.0, 5.0};     // ensemble.box.lat, degrees
+  std::array<double, 2> gaussian_mean = {0.0, 0.0};     // ensemble.gaussian.mean (p_x, p_y)
+  std::array<double, 2> gaussian_sigma = {0.01, 0.01};  // ensemble.gaussian.sigma
 
   // [integrator]
   std::string method = "yoshida6a";
@@ -58,10 +67,30 @@ struct Scene {
   std::optional<double> max_energy_error;
   bool initial_states = false;
   bool final_states = false;
+  // observe.zoom: an R x R histogram of a square region in gnomonic projection
+  bool zoom = false;
+  std::array<double, 2> zoom_center = {45.0, 0.0};  // lon, lat in degrees
+  double zoom_width = 10.0;                          // full width, degrees
+  int zoom_resolution = 512;
+  // observe.confine: only trajectories whose momentum stays in this square count
+  bool confine = false;
+  std::array<double, 2> confine_center = {45.0, 0.0};
+  double confine_width = 10.0;
+  // observe.frames: one map per span [t_k, t_k+1) of window start times, in T
+  std::vector<double> frame_times;
 
   // [output]
   std::string output_dir = "out";
   bool images = true;
+
+  // [[panel]]: further runs of the same scene with overrides, drawn as insets
+  // of one figure (e.g. the zooms (b), (c) of the paper's Figure 2).
+  struct Panel {
+    std::string name;               // [a-z0-9_-]+, names the panel's output folder
+    std::string title;
+    std::vector<std::string> sets;  // --set style overrides applied to this scene
+  };
+  std::vector<Panel> panels;
 
   // Provenance
   std::string file;                        // path it was read from ("<string>" if none)

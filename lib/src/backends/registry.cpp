@@ -98,9 +98,10 @@ std::uint64_t floor_pow2(std::uint64_t n) {
 
 void check_device_memory(const Plan& plan, const DeviceInfo& dev, std::uint64_t max_chunk,
                          std::uint64_t max_alloc) {
-  const double map_bytes = static_cast<double>(plan.npix) * 12.0;  // 32-bit chunk + 64-bit total
+  const double map_bytes = static_cast<double>(plan.hist_size) * 12.0;  // 32-bit chunk + 64-bit total
   const double avail = static_cast<double>(dev.memory);
-  if (plan.npix && avail > 0 && (map_bytes > 0.5 * avail || plan.npix * 8.0 > static_cast<double>(max_alloc))) {
+  if (plan.hist_size && avail > 0 &&
+      (map_bytes > 0.5 * avail || plan.hist_size * 8.0 > static_cast<double>(max_alloc))) {
     SourcePos p = plan.scene.pos("observe.velocity_map.nside");
     throw SceneError(plan.scene.file, p.line, p.column, "observe.velocity_map.nside",
                      "nside = " + std::to_string(plan.scene.nside) + " needs " +

@@ -1,6 +1,7 @@
 // arnoldweb: from a validated scene to a plan (schedule, feature mask, buffers).
 #include "arnoldweb/plan.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -43,6 +44,23 @@ std::int64_t exact_ratio(double x, double unit) {
   throw SceneError(s.file, p.line, p.column, key, message);
 }
 
+constexpr double kDeg = M_PI / 180.0;
+
+// Orthonormal frame of the direction at longitude lon, latitude lat (degrees):
+// c the direction, e1 east, e2 north.
+void frame_of(double lon, double lat, double* out) {
+  const double cl = std::cos(lat * kDeg), sl = std::sin(lat * kDeg);
+  const double co = std::cos(lon * kDeg), so = std::sin(lon * kDeg);
+  const double f[9] = {cl * co, cl * so, sl, -so, co, 0.0, -sl * co, -sl * so, cl};
+  for (int i = 0; i < 9; ++i) out[i] = f[i];
+}
+
+// A gnomonic square region (aw_params.h layout) of full angular width `width`.
+void region_of(const std::array<double, 2>& center, double width, double* out) {
+  frame_of(center[0], center[1], out);
+  out[9] = std::tan(0.5 * width * kDeg);
+}
+
 }  // namespace
 
 std::string KernelConfig::defines() const {
@@ -67,6 +85,9 @@ std::vector<std::string> feature_names(std::uint32_t f) {
   if (f & AW_F_INITIAL_STATES) n.push_back("initial_states");
   if (f & AW_F_FINAL_STATES) n.push_back("final_states");
   if (f & AW_F_TEST_INJECT) n.push_back("test_inject");
+  if (f & AW_F_ZOOM) n.push_back("zoom");
+  if (f & AW_F_CONFINE) n.push_back("confine");
+  if (f & AW_F_FRAMES) n.push_back("frames");
   return n;
 }
 
@@ -118,7 +139,16 @@ Plan make_plan(const Scene& scene) {
     fail(scene, "model.energy",
          "E = " + fmt(scene.energy) + " leaves no accessible phase space (V >= -2 everywhere); "
          "choose E > -2");
-  p.accessible_fraction = accessible_fraction(scene.energy);
+  // With Gaussian momenta the position must leave room for p_x^2 + p_y^2 / 2.
+  const double mean_kinetic = scene.initial == "gaussian"
+                                  ? 0.5 * (scene.gaussian_mean[0] * scene.gaussian_mean[0] +
+                                           scene.gaussian_mean[1] * scene.gaussian_mean[1])
+                                  : 0.0;
+  if (scene.initial == "gaussian" && !(scene.energy - mean_kinetic > -2.0))
+    fail(scene, "ensemble.gaussian.mean",
+         "the mean momentum carries kinetic energy " + fmt(mean_kinetic) + " >= E + 2 = " +
+             fmt(scene.energy + 2) + ": no position has enough energy left for it");
+  p.accessible_fraction = accessible_fraction(scene.energy - mean_kinetic);
   if (p.accessible_fraction < kMinAccessible) {
     double lo = scene.energy, hi = 2.0;  // smallest E with enough accessible torus
     for (int i = 0; i < 40; ++i) {
@@ -189,7 +219,13 @@ Plan make_plan(const Scene& scene) {
   k.math = scene.math;
   k.stages = m.stages;
   k.kick_first = m.kick_first;
-  k.initial = AW_INITIAL_SHELL;
+  k.initial = scene.initial == "cap"        ? AW_INITIAL_CAP
+              : scene.initial == "box"      ? AW_INITIAL_BOX
+              : scene.initial == "gaussian" ? AW_INITIAL_GAUSSIAN
+                                            : AW_INITIAL_SHELL;
+  if (scene.zoom) k.features |= AW_F_ZOOM;
+  if (scene.confine) k.features |= AW_F_CONFINE;
+  if (!scene.frame_times.empty()) k.features |= AW_F_FRAMES;
   if (scene.velocity_map) k.features |= AW_F_VELOCITY_MAP;
   if (energy) k.features |= AW_F_ENERGY;
   if (scene.max_energy_error) k.features |= AW_F_ENERGY_LIMIT;
@@ -199,11 +235,29 @@ Plan make_plan(const Scene& scene) {
     fail(scene, scene.final_states ? "observe.final_states" : "observe.initial_states",
          "state records are kept for at most " + std::to_string(kMaxStateRecords) +
              " trajectories (" + std::to_string(scene.trajectories) + " asked for)");
-  if (scene.velocity_map) {
+  if (scene.velocity_map)
     p.npix = 12ull * static_cast<std::uint64_t>(scene.nside) * static_cast<std::uint64_t>(scene.nside);
-    if (static_cast<double>(p.windows) * 4.0e6 > 4.0e9)
-      fail(scene, "run.duration", "more than 1000 averaging windows per trajectory");
+  // frames: boundaries as window indices
+  if (!scene.frame_times.empty()) {
+    if (!scene.velocity_map)
+      fail(scene, "observe.frames", "frames are velocity maps: set observe.velocity_map too");
+    if (static_cast<int>(scene.frame_times.size()) > AW_MAX_FRAMES + 1)
+      fail(scene, "observe.frames.times", "at most " + std::to_string(AW_MAX_FRAMES + 1) + " times");
+    for (double t : scene.frame_times) {
+      const std::int64_t w = t == 0 ? 0 : exact_ratio(t, scene.average);
+      if ((t != 0 && w == 0) || w > p.windows)
+        fail(scene, "observe.frames.times",
+             "frame time " + fmt(t) + " T is not a multiple of run.average = " + fmt(scene.average) +
+                 " T between 0 and run.duration = " + fmt(scene.duration) + " T");
+      p.frame_bounds.push_back(w);
+    }
+    p.frames = static_cast<int>(p.frame_bounds.size()) - 1;
+  } else {
+    p.frame_bounds = {0, p.windows};
   }
+  if (scene.zoom) p.zoom_resolution = scene.zoom_resolution;
+  p.hist_size = static_cast<std::uint64_t>(p.frames) * p.npix +
+                static_cast<std::uint64_t>(p.zoom_resolution) * static_cast<std::uint64_t>(p.zoom_resolution);
 
   // ---- parameter buffers
   p.rp.assign(AW_P_COUNT, 0.0);
@@ -225,6 +279,28 @@ Plan make_plan(const Scene& scene) {
   p.ip[AW_I_STAGES] = m.stages;
   p.ip[AW_I_KICK_FIRST] = m.kick_first ? 1 : 0;
   p.ip[AW_I_INJECT_INDEX] = -1;
+  p.ip[AW_I_INITIAL] = k.initial;
+  p.ip[AW_I_ZOOM_RESOLUTION] = p.zoom_resolution;
+  p.ip[AW_I_FRAMES] = p.frames;
+  for (std::size_t i = 0; i < p.frame_bounds.size(); ++i) p.ip[AW_I_FRAME_BOUNDS + i] = p.frame_bounds[i];
+
+  double* init = &p.rp[AW_P_INIT];
+  if (k.initial == AW_INITIAL_CAP) {
+    frame_of(scene.cap_center[0], scene.cap_center[1], init);
+    init[9] = std::cos(scene.cap_radius * kDeg);
+  } else if (k.initial == AW_INITIAL_BOX) {
+    init[0] = scene.box_lon[0] / 360.0;
+    init[1] = (scene.box_lon[1] - scene.box_lon[0]) / 360.0;
+    init[2] = std::sin(scene.box_lat[0] * kDeg);
+    init[3] = std::sin(scene.box_lat[1] * kDeg) - init[2];
+  } else if (k.initial == AW_INITIAL_GAUSSIAN) {
+    init[0] = scene.gaussian_mean[0];
+    init[1] = scene.gaussian_mean[1];
+    init[2] = scene.gaussian_sigma[0];
+    init[3] = scene.gaussian_sigma[1];
+  }
+  if (scene.zoom) region_of(scene.zoom_center, scene.zoom_width, &p.rp[AW_P_ZOOM]);
+  if (scene.confine) region_of(scene.confine_center, scene.confine_width, &p.rp[AW_P_CONFINE]);
   return p;
 }
 

@@ -54,6 +54,7 @@ Result run(const Plan& plan, Backend& backend, const RunOptions& options) {
     r.flagged_nonfinite += out.counters[AW_C_FLAG_NONFINITE];
     r.flagged_energy += out.counters[AW_C_FLAG_ENERGY];
     r.flagged_initial += out.counters[AW_C_FLAG_INITIAL];
+    r.left_region += out.counters[AW_C_LEFT_REGION];
     for (int b = 0; b < AW_EHIST_BINS; ++b) r.energy.log_hist[b] += out.counters[AW_C_EHIST + b];
     for (std::size_t g = 0; g + 1 < out.group_stats.size(); g += 2) {
       r.energy.max = std::max(r.energy.max, out.group_stats[g]);
@@ -78,7 +79,16 @@ Result run(const Plan& plan, Backend& backend, const RunOptions& options) {
     }
   }
   r.completed = done;
-  r.map = backend.read_map();
+  // the device's histograms: F frames of the map, then the zoom
+  const std::vector<std::uint64_t> hist = backend.read_map();
+  const std::uint64_t npix = plan.npix;
+  r.map.assign(npix, 0);
+  for (int f = 0; f < plan.frames; ++f) {
+    const auto first = hist.begin() + static_cast<std::ptrdiff_t>(f * npix);
+    if (plan.frames > 1) r.frames.emplace_back(first, first + static_cast<std::ptrdiff_t>(npix));
+    for (std::uint64_t i = 0; i < npix; ++i) r.map[i] += first[static_cast<std::ptrdiff_t>(i)];
+  }
+  r.zoom.assign(hist.begin() + static_cast<std::ptrdiff_t>(plan.frames * npix), hist.end());
   if (!r.energy.tracked) r.energy.log_hist.clear();
   r.energy.mean = r.binned ? esum / static_cast<double>(r.binned) : 0.0;
   r.wall_seconds = std::chrono::duration<double>(clock::now() - t_start).count();

@@ -1,6 +1,7 @@
 // arnoldweb scene layer: from a TOML table to a Scene. Checks that every
 // section and key is known, then reads and range-checks every value,
 // recording where each key was written.
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -54,6 +55,16 @@ void check_table(const toml::table& t, const std::string& prefix, Problems& prob
   for (const std::string& s : sections()) section_list += (section_list.empty() ? "" : ", ") + s;
   for (auto&& [k, v] : t) {
     const std::string dotted = join(prefix, k.str());
+    if (prefix.empty() && dotted == "panel") {
+      // [[panel]]: an array of tables with the keys panel.*
+      const toml::array* panels = v.as_array();
+      if (!panels || !panels->is_array_of_tables()) {
+        problems.at(dotted, v.source(), "must be written as [[panel]] tables (an array of tables)");
+        continue;
+      }
+      for (const toml::node& panel : *panels) check_table(*panel.as_table(), "panel", problems);
+      continue;
+    }
     if (prefix.empty()) {
       if (!is_section(dotted)) {
         problems.at(dotted, k.source(),
@@ -174,6 +185,65 @@ class Reader {
     return false;
   }
 
+  // An array of numbers (ints accepted as floats); n > 0: exactly n of them.
+  template <class Ok>
+  bool reals(const std::string& key, std::vector<double>& out, std::size_t n, Ok ok) {
+    const toml::node* node_ = node(key);
+    if (!node_) return false;
+    const toml::array* a = node_->as_array();
+    if (!a) {
+      bad(key, *node_, false);
+      return false;
+    }
+    std::vector<double> v;
+    for (const toml::node& e : *a) {
+      if (auto f = e.as_floating_point()) v.push_back(f->get());
+      else if (auto i = e.as_integer()) v.push_back(static_cast<double>(i->get()));
+      else {
+        bad(key, *node_, true, " (an element is a " + std::string(type_name(e.type())) + ")");
+        return false;
+      }
+      if (!std::isfinite(v.back())) {
+        bad(key, *node_, true);
+        return false;
+      }
+    }
+    if ((n && v.size() != n) || !ok(v)) {
+      bad(key, *node_, true, " (" + std::to_string(v.size()) + " values)");
+      return false;
+    }
+    out = v;
+    return true;
+  }
+
+  template <class Ok>
+  bool pair(const std::string& key, std::array<double, 2>& out, Ok ok) {
+    std::vector<double> v;
+    if (!reals(key, v, 2, [&](const std::vector<double>& x) { return ok(x[0], x[1]); })) return false;
+    out = {v[0], v[1]};
+    return true;
+  }
+
+  // A composite key: false (off), or a table of sub-keys (on).
+  bool table_or_false(const std::string& key, bool& on) {
+    const toml::node* n = node(key);
+    if (!n) return false;
+    if (auto b = n->as_boolean()) {
+      if (b->get()) {
+        bad(key, *n, true, " (true is not enough: give the table)");
+        return false;
+      }
+      on = false;
+      return false;
+    }
+    if (n->is_table()) {
+      on = true;
+      return true;
+    }
+    bad(key, *n, false);
+    return false;
+  }
+
   bool boolean(const std::string& key, bool& out) {
     const toml::node* n = node(key);
     if (!n) return false;
@@ -287,6 +357,16 @@ void read_values(const toml::table& root, const Origins& origins, Problems& prob
   if (r.integer("ensemble.seed", i, at_least_0)) s.seed = static_cast<std::uint64_t>(i);
   r.choice("ensemble.initial", s.initial, initial_kinds());
   if (r.integer("ensemble.chunk", i, at_least_0)) s.chunk = static_cast<std::uint64_t>(i);
+  const auto direction = [](double, double lat) { return lat >= -90 && lat <= 90; };
+  for (const char* table : {"ensemble.cap", "ensemble.box", "ensemble.gaussian"})
+    if (const toml::node* n = r.node(table); n && !n->is_table()) r.bad(table, *n, false);
+  r.pair("ensemble.cap.center", s.cap_center, direction);
+  r.real("ensemble.cap.radius", s.cap_radius, [](double v) { return v > 0 && v <= 180; });
+  r.pair("ensemble.box.lon", s.box_lon, [](double a, double b) { return a < b && b <= a + 360; });
+  r.pair("ensemble.box.lat", s.box_lat,
+         [](double a, double b) { return a >= -90 && a < b && b <= 90; });
+  r.pair("ensemble.gaussian.mean", s.gaussian_mean, [](double, double) { return true; });
+  r.pair("ensemble.gaussian.sigma", s.gaussian_sigma, [](double a, double b) { return a > 0 && b > 0; });
 
   // [integrator]
   std::vector<std::string> method_list;
@@ -345,10 +425,72 @@ void read_values(const toml::table& root, const Origins& origins, Problems& prob
   if (r.real("observe.max_energy_error", limit, positive)) s.max_energy_error = limit;
   r.boolean("observe.initial_states", s.initial_states);
   r.boolean("observe.final_states", s.final_states);
+  const auto width = [](double w) { return w > 0 && w < 120; };
+  if (r.table_or_false("observe.zoom", s.zoom)) {
+    r.pair("observe.zoom.center", s.zoom_center, direction);
+    r.real("observe.zoom.width", s.zoom_width, width);
+    if (r.integer("observe.zoom.resolution", i, [](std::int64_t v) { return v >= 16 && v <= 8192; }))
+      s.zoom_resolution = static_cast<int>(i);
+  }
+  if (r.table_or_false("observe.confine", s.confine)) {
+    r.pair("observe.confine.center", s.confine_center, direction);
+    r.real("observe.confine.width", s.confine_width, width);
+  }
+  bool frames = false;
+  if (r.table_or_false("observe.frames", frames))
+    r.reals("observe.frames.times", s.frame_times, 0, [](const std::vector<double>& t) {
+      if (t.size() < 2 || t.size() > 65 || t[0] < 0) return false;
+      for (std::size_t k = 1; k < t.size(); ++k)
+        if (!(t[k] > t[k - 1])) return false;
+      return true;
+    });
 
   // [output]
   r.text("output.dir", s.output_dir, [](const std::string& d) { return !d.empty(); });
   r.boolean("output.images", s.images);
+
+  // [[panel]]
+  if (const toml::node* n = root.get("panel"); n && n->is_array()) {
+    for (const toml::node& e : *n->as_array()) {
+      const toml::table* t = e.as_table();
+      if (!t) continue;  // reported by check_structure
+      Scene::Panel panel;
+      const toml::node* name = t->get("name");
+      if (s.panels.empty())  // positions of the first panel's keys
+        for (auto&& [k, v] : *t) {
+          SourcePos p;
+          p.line = static_cast<int>(k.source().begin.line);
+          p.column = static_cast<int>(k.source().begin.column);
+          s.where["panel." + std::string(k.str())] = p;
+        }
+      const std::string at = "panel";
+      if (!name || !name->is_string() || name->as_string()->get().empty() ||
+          name->as_string()->get().find_first_not_of(
+              "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_") != std::string::npos) {
+        problems.at("panel.name", name ? name->source() : e.source(),
+                    "must be " + find_spec("panel.name")->must);
+        continue;
+      }
+      panel.name = name->as_string()->get();
+      for (const Scene::Panel& other : s.panels)
+        if (other.name == panel.name) problems.at("panel.name", name->source(), "names panel \"" + panel.name + "\" twice");
+      if (const toml::node* title = t->get("title")) {
+        if (title->is_string()) panel.title = title->as_string()->get();
+        else problems.at("panel.title", title->source(), "must be a string");
+      }
+      if (const toml::node* set = t->get("set")) {
+        const toml::array* a = set->as_array();
+        bool good = a != nullptr;
+        if (a)
+          for (const toml::node& x : *a) {
+            if (!x.is_string() || x.as_string()->get().find('=') == std::string::npos) good = false;
+            else panel.sets.push_back(x.as_string()->get());
+          }
+        if (!good) problems.at("panel.set", set->source(), "must be " + find_spec("panel.set")->must);
+      }
+      s.panels.push_back(std::move(panel));
+    }
+  }
 }
 
 }  // namespace arnoldweb::scene_detail

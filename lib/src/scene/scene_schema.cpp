@@ -33,6 +33,16 @@ std::string one_of(const std::vector<std::string>& names) {
 
 std::string boolean(bool b) { return b ? "true" : "false"; }
 
+std::string pair(const std::array<double, 2>& v) {
+  return "[" + toml_double(v[0]) + ", " + toml_double(v[1]) + "]";
+}
+
+std::string list(const std::vector<double>& v) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + toml_double(v[i]);
+  return s + "]";
+}
+
 std::vector<KeySpec> build() {
   const std::string device_forms = "\"auto\", \"cpu\", \"opencl:N\" or \"cuda:N\"";
   std::vector<KeySpec> k;
@@ -68,11 +78,51 @@ std::vector<KeySpec> build() {
       "only on (seed, i), whatever the device or chunking.");
   add("ensemble.initial", "string", quoted_list(initial_kinds(), " or "), one_of(initial_kinds()),
       [](const Scene& s) { return toml_string(s.initial); },
-      "How initial states are drawn. \"shell\": X uniform on the accessible part of the torus, "
-      "direction of P uniform on the sphere, speed sqrt(2 (E - V(X))).");
+      "How initial states are drawn; X is uniform on the accessible part of the torus. "
+      "\"shell\": direction of P uniform on the sphere, speed sqrt(2 (E - V(X))). \"cap\", "
+      "\"box\": direction uniform in ensemble.cap or ensemble.box. \"gaussian\": see "
+      "ensemble.gaussian.");
   add("ensemble.chunk", "integer", ">= 0 (0 = automatic)", "an integer >= 0 (0 = automatic)",
       [](const Scene& s) { return std::to_string(s.chunk); },
       "Trajectories per kernel launch; 0 lets the runner choose. Does not change the results.");
+  add("ensemble.cap", "table", "{ center = [lon, lat], radius = deg }",
+      "a table { center = [lon, lat], radius = <degrees> }",
+      [](const Scene& s) {
+        return "{ center = " + pair(s.cap_center) + ", radius = " + toml_double(s.cap_radius) + " }";
+      },
+      "The spherical cap of momentum directions for ensemble.initial = \"cap\".", Shape::Composite);
+  add("ensemble.cap.center", "array of 2 floats", "[lon, lat] in degrees, lat in [-90, 90]",
+      "an array [longitude, latitude] in degrees, latitude from -90 to 90",
+      [](const Scene& s) { return pair(s.cap_center); },
+      "Centre of the cap: longitude and latitude of the momentum direction, in degrees "
+      "(P along (cos lat cos lon, cos lat sin lon, sin lat)).");
+  add("ensemble.cap.radius", "float", "> 0 and <= 180", "a float greater than 0 and at most 180 (degrees)",
+      [](const Scene& s) { return toml_double(s.cap_radius); }, "Angular radius of the cap, degrees.");
+  add("ensemble.box", "table", "{ lon = [a, b], lat = [c, d] }",
+      "a table { lon = [from, to], lat = [from, to] } in degrees",
+      [](const Scene& s) {
+        return "{ lon = " + pair(s.box_lon) + ", lat = " + pair(s.box_lat) + " }";
+      },
+      "The longitude/latitude box of momentum directions for ensemble.initial = \"box\" "
+      "(uniform in area).", Shape::Composite);
+  add("ensemble.box.lon", "array of 2 floats", "[from, to], from < to <= from + 360",
+      "an array [from, to] of longitudes in degrees with from < to <= from + 360",
+      [](const Scene& s) { return pair(s.box_lon); }, "Longitude range of the box, degrees.");
+  add("ensemble.box.lat", "array of 2 floats", "[from, to], -90 <= from < to <= 90",
+      "an array [from, to] of latitudes in degrees with -90 <= from < to <= 90",
+      [](const Scene& s) { return pair(s.box_lat); }, "Latitude range of the box, degrees.");
+  add("ensemble.gaussian", "table", "{ mean = [p_x, p_y], sigma = [s_x, s_y] }",
+      "a table { mean = [p_x, p_y], sigma = [s_x, s_y] }",
+      [](const Scene& s) {
+        return "{ mean = " + pair(s.gaussian_mean) + ", sigma = " + pair(s.gaussian_sigma) + " }";
+      },
+      "Gaussian initial momenta for ensemble.initial = \"gaussian\": p_x, p_y normal, p_z from "
+      "the energy with a random sign (the paper's Figure 4: mean = [sqrt(E), sqrt(E)], sigma = "
+      "[0.01, 0.01]).", Shape::Composite);
+  add("ensemble.gaussian.mean", "array of 2 floats", "finite", "an array [p_x, p_y] of finite floats",
+      [](const Scene& s) { return pair(s.gaussian_mean); }, "Mean of p_x and p_y.");
+  add("ensemble.gaussian.sigma", "array of 2 floats", "> 0", "an array [s_x, s_y] of floats greater than 0",
+      [](const Scene& s) { return pair(s.gaussian_sigma); }, "Standard deviations of p_x and p_y.");
 
   // [integrator]
   add("integrator.method", "string", quoted_list(method_name_list(), " or "),
@@ -147,6 +197,48 @@ std::vector<KeySpec> build() {
   add("observe.final_states", "boolean", "true or false", "true or false",
       [](const Scene& s) { return boolean(s.final_states); },
       "Write the final state of every trajectory.");
+  add("observe.zoom", "table or false", "{ center = [lon, lat], width = deg, resolution = R } or false",
+      "a table { center = [lon, lat], width = <degrees>, resolution = R } or false",
+      [](const Scene& s) {
+        return s.zoom ? "{ center = " + pair(s.zoom_center) + ", width = " + toml_double(s.zoom_width) +
+                            ", resolution = " + std::to_string(s.zoom_resolution) + " }"
+                      : boolean(false);
+      },
+      "A high-resolution R x R histogram of the averaged velocities in a square region, in "
+      "gnomonic projection about its centre (zoom panels).", Shape::Composite);
+  add("observe.zoom.center", "array of 2 floats", "[lon, lat] in degrees, lat in [-90, 90]",
+      "an array [longitude, latitude] in degrees, latitude from -90 to 90",
+      [](const Scene& s) { return pair(s.zoom_center); }, "Centre of the zoom region, degrees.");
+  add("observe.zoom.width", "float", "> 0 and < 120", "a float greater than 0 and less than 120 (degrees)",
+      [](const Scene& s) { return toml_double(s.zoom_width); }, "Full angular width of the zoom square, degrees.");
+  add("observe.zoom.resolution", "integer", "16 to 8192", "an integer from 16 to 8192",
+      [](const Scene& s) { return std::to_string(s.zoom_resolution); }, "Bins per side of the zoom histogram.");
+  add("observe.confine", "table or false", "{ center = [lon, lat], width = deg } or false",
+      "a table { center = [lon, lat], width = <degrees> } or false",
+      [](const Scene& s) {
+        return s.confine ? "{ center = " + pair(s.confine_center) + ", width = " +
+                               toml_double(s.confine_width) + " }"
+                         : boolean(false);
+      },
+      "Region confinement: only trajectories whose momentum direction stays inside this square "
+      "(gnomonic, checked at every energy sample) are binned; the others are counted as "
+      "left_region.", Shape::Composite);
+  add("observe.confine.center", "array of 2 floats", "[lon, lat] in degrees, lat in [-90, 90]",
+      "an array [longitude, latitude] in degrees, latitude from -90 to 90",
+      [](const Scene& s) { return pair(s.confine_center); }, "Centre of the confinement square, degrees.");
+  add("observe.confine.width", "float", "> 0 and < 120", "a float greater than 0 and less than 120 (degrees)",
+      [](const Scene& s) { return toml_double(s.confine_width); }, "Full angular width of the square, degrees.");
+  add("observe.frames", "table or false", "{ times = [t0, t1, ...] } or false",
+      "a table { times = [t0, t1, ...] } (in T) or false",
+      [](const Scene& s) {
+        return s.frame_times.empty() ? boolean(false) : "{ times = " + list(s.frame_times) + " }";
+      },
+      "Time series: frame k is the velocity map of the windows starting in [t_k, t_k+1) (a "
+      "diffusion movie).", Shape::Composite);
+  add("observe.frames.times", "array of floats", "2 to 65 increasing times >= 0, multiples of run.average",
+      "an array of 2 to 65 increasing times >= 0 (in T)",
+      [](const Scene& s) { return s.frame_times.empty() ? std::string() : list(s.frame_times); },
+      "Frame boundaries, in T.");
 
   // [output]
   add("output.dir", "string", "non-empty path", "a non-empty string (a directory path)",
@@ -154,6 +246,17 @@ std::vector<KeySpec> build() {
       "Directory the outputs are written to.");
   add("output.images", "boolean", "true or false", "true or false",
       [](const Scene& s) { return boolean(s.images); }, "Write images of the maps.");
+
+  // [[panel]] (an array of tables; to_toml writes them after the sections)
+  add("panel.name", "string", "letters, digits, - and _", "a non-empty string of letters, digits, - and _",
+      [](const Scene&) { return std::string(); },
+      "Name of a further run of this scene drawn as an inset of the same figure; its outputs go "
+      "to <output.dir>/panel-<name>.");
+  add("panel.title", "string", "any", "a string", [](const Scene&) { return std::string(); },
+      "Caption of the panel.");
+  add("panel.set", "array of strings", "key=value overrides", "an array of \"key=value\" strings",
+      [](const Scene&) { return std::string(); },
+      "Overrides applied to the scene for this panel, written like --set.");
   return k;
 }
 
@@ -254,7 +357,7 @@ std::string keys_of(const std::string& parent) {
 }
 
 const std::vector<std::string>& initial_kinds() {
-  static const std::vector<std::string> k = {"shell"};
+  static const std::vector<std::string> k = {"shell", "cap", "box", "gaussian"};
   return k;
 }
 

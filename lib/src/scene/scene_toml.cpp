@@ -84,6 +84,12 @@ std::string Scene::to_toml() const {
         o << name << " = " << value << "\n";
     }
   }
+  for (const Panel& p : panels) {
+    o << "\n[[panel]]\nname = " << toml_string(p.name) << "\ntitle = " << toml_string(p.title)
+      << "\nset = [";
+    for (std::size_t i = 0; i < p.sets.size(); ++i) o << (i ? ", " : "") << toml_string(p.sets[i]);
+    o << "]\n";
+  }
   return o.str();
 }
 

@@ -53,8 +53,8 @@ class CpuBackend final : public Backend {
     rp_d_ = plan.rp;
     rp_f_.assign(plan.rp.begin(), plan.rp.end());
     ip_ = plan.ip;
-    map32_.assign(std::max<std::uint64_t>(plan.npix, 1), 0);
-    map64_.assign(plan.npix, 0);
+    map32_.assign(std::max<std::uint64_t>(plan.hist_size, 1), 0);
+    map64_.assign(plan.hist_size, 0);
   }
 
   void run_chunk(std::uint64_t first, std::uint64_t count, ChunkOutput& out) override {

@@ -52,7 +52,7 @@ class CudaBackend final : public Backend {
     check_device_memory(plan, info_, max_chunk, info_.memory);
     float_ = plan.kernel.precision == Precision::Float;
     features_ = plan.kernel.features;
-    npix_ = plan.npix;
+    npix_ = plan.hist_size;  // every histogram: frames of the map, then the zoom
     max_chunk_ = max_chunk;
     defines_ = plan.kernel.defines();
     target_ = nvrtc_target(cc_, info_.id + " (" + info_.name + ")");

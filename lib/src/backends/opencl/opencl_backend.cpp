@@ -84,7 +84,7 @@ class OpenclBackend final : public Backend {
                         "integrator.precision = \"float\" or choose another device");
     check_device_memory(plan, info_, max_chunk, device_.get_info<cl_ulong>(CL_DEVICE_MAX_MEM_ALLOC_SIZE));
     features_ = plan.kernel.features;
-    npix_ = plan.npix;
+    npix_ = plan.hist_size;  // every histogram: frames of the map, then the zoom
     lanes_ = info_.is_cpu ? 8 : 1;
     if (const char* env = std::getenv("ARNOLDWEB_OPENCL_LANES")) lanes_ = std::atoi(env);
     if (lanes_ != 1 && lanes_ != 2 && lanes_ != 4 && lanes_ != 8 && lanes_ != 16)
