@@ -32,6 +32,7 @@ void add_devices_command(CLI::App& app, Action& action);
 void add_methods_command(CLI::App& app, Action& action);
 void add_check_command(CLI::App& app, Action& action);
 void add_run_command(CLI::App& app, Action& action);
+void add_bench_command(CLI::App& app, Action& action);
 void add_keys_command(CLI::App& app, Action& action);
 
 }  // namespace arnoldweb::cli

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   add_methods_command(app, action);
   add_check_command(app, action);
   add_run_command(app, action);
+  add_bench_command(app, action);
   add_keys_command(app, action);
 
   try {
