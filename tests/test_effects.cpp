@@ -72,8 +72,9 @@ TEST_SUITE("math") {
       const int first = r.m[0] ? r.m[0] : r.m[1] ? r.m[1] : r.m[2];
       CHECK(first > 0);
     }
-    const auto pred = predicted_resonances();
-    CHECK(pred.size() == 13 + 4);
+    const auto primary = primary_resonances();
+    CHECK(primary.size() == 6);
+    for (const auto& r : primary) CHECK((r.order == 1 || r.order == 2));
     CHECK(distance_to_circle(Resonance{{1, 0, 0}, 1}, direction(45, 0)) == doctest::Approx(M_PI / 4));
     CHECK(distance_to_circle(Resonance{{1, -1, 0}, 1}, direction(45, 0)) == doctest::Approx(0).epsilon(1e-15));
   }

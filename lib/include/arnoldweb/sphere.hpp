@@ -29,10 +29,10 @@ struct Resonance {
 // Every resonance with max |m_i| <= max_order, lowest order first.
 std::vector<Resonance> resonances(int max_order);
 
-// The resonances the perturbation V = cos x cos y (1 + cos 2z) drives at
-// first order (its Fourier modes (1,+-1,0), (1,+-1,+-2)) and at second order
-// (sums and differences of two modes, reduced: every m with max |m_i| = 1).
-std::vector<Resonance> predicted_resonances();
+// The primary resonances: the Fourier modes of the perturbation
+// V = cos x cos y (1 + cos 2z), m = (1,+-1,0) and (1,+-1,+-2), which act at
+// first order in V. (Second-order ones, from sums of two modes, are weaker.)
+std::vector<Resonance> primary_resonances();
 
 // Angular distance (radians) of a unit direction from the circle m.P = 0.
 double distance_to_circle(const Resonance& r, const Vec3& unit);

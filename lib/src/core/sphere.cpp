@@ -74,12 +74,11 @@ std::vector<Resonance> resonances(int max_order) {
   return out;
 }
 
-std::vector<Resonance> predicted_resonances() {
+std::vector<Resonance> primary_resonances() {
   std::vector<Resonance> out;
   for (const Resonance& r : resonances(2)) {
     const auto& m = r.m;
-    const bool first_order = std::abs(m[0]) == 1 && std::abs(m[1]) == 1 && (m[2] == 0 || std::abs(m[2]) == 2);
-    if (r.order == 1 || first_order) out.push_back(r);
+    if (m[0] == 1 && std::abs(m[1]) == 1 && (m[2] == 0 || std::abs(m[2]) == 2)) out.push_back(r);
   }
   return out;
 }
