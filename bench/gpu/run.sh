@@ -1,6 +1,13 @@
 #!/usr/bin/env bash
 # The whole GPU-machine job in one call (device tool), from the repository root:
-#   bash bench/gpu/run.sh [quick|full]
+#   bash bench/gpu/run.sh [quick|full|bench]
+# bench: only the build and the benchmark section (issue 7, docs/performance.md):
+# arnoldweb_bench on every GPU at N up to 8.4e6 x 2000 steps with the naive
+# CUDA baseline, GPU memory of a 1e9 map run, ncu FP64-pipe metrics of our
+# kernel and the naive kernel, the Figure-3 scene end to end (1e8 x 5000
+# steps), every CPU device with the naive OpenMP baseline, the cost of
+# effects. $OUT keeps at most 8 files: summary.txt, bench.csv,
+# bench_throughput.png, ncu.csv and results.tgz (every log and file).
 # Builds everything there, runs the whole test suite on every device (cpu,
 # PoCL, NVIDIA OpenCL, CUDA), the four-backend parity check (portable math at
 # full size: 10^5 trajectories x 10^4 steps; native-math drift), a short
@@ -11,6 +18,7 @@ set -uo pipefail
 mode=${1:-full}
 OUT=${OUT:-$PWD/gpu-out}
 mkdir -p "$OUT"
+exec > >(tee "$OUT/summary.txt") 2>&1  # the whole log comes back as summary.txt
 t0=$(date +%s)
 stamp() { echo "[$(( $(date +%s) - t0 )) s] $*"; }
 
@@ -25,11 +33,15 @@ if ! cmake -S . -B build-gpu -G Ninja -DCMAKE_BUILD_TYPE=Release \
   tail -40 "$OUT/build.txt"; exit 1
 fi
 stamp "build"
-if ! cmake --build build-gpu -j"$(nproc)" >>"$OUT/build.txt" 2>&1; then
+targets=""
+[ "$mode" = bench ] && targets="--target arnoldweb-cli arnoldweb_bench"
+if ! cmake --build build-gpu -j"$(nproc)" $targets >>"$OUT/build.txt" 2>&1; then
   grep -E "error|Error" -A4 "$OUT/build.txt" | head -60; exit 1
 fi
 build-gpu/arnoldweb devices | tee "$OUT/devices.txt"
 
+ctest_rc=-; parity_rc=-
+if [ "$mode" != bench ]; then
 stamp "tests"
 ctest --test-dir build-gpu --output-on-failure -j4 --timeout 900 >"$OUT/ctest.txt" 2>&1
 ctest_rc=$?
@@ -62,7 +74,142 @@ PY
 done
 column -t -s, "$OUT/throughput.csv"
 
+fi
+
+# ---------------------------------------------------------------- benchmark (issue 7)
+# Every step has its own time limit so that the whole call stays well inside
+# the device tool's 10 minutes; results of finished steps are kept.
+BW=/tmp/aw-bench
+DEADLINE=${AW_BENCH_DEADLINE:-540}  # seconds since the start of the script
+left() {  # timeout for the next step: at most $1, never past the deadline
+  local l=$(( DEADLINE - ($(date +%s) - t0) )); [ "$l" -gt "$1" ] && l=$1; [ "$l" -lt 5 ] && l=5; echo "$l"; }
+rm -rf "$BW"; mkdir -p "$BW"
+B=build-gpu/arnoldweb_bench
+ids_where() {  # ids of devices with cpu == $1
+  build-gpu/arnoldweb devices --json | python3 -c "import json,sys; print(','.join(d['id'] for d in json.load(sys.stdin) if d['cpu'] == ($1 == 1)))"
+}
+GPUS=$(ids_where 0); CPUS=$(ids_where 1)
+CUDA0=$(echo "$GPUS" | tr , '\n' | grep '^cuda' | head -1)
+echo "GPU devices: $GPUS   CPU devices: $CPUS"
+if [ -n "$GPUS" ]; then
+  stamp "bench: GPUs, N up to 8.4e6 x 2000 steps, naive CUDA baseline, memory of a 1e9 map run"
+  timeout $(left 160) $B --devices "$GPUS" --preset gpu --sizes 65536,262144,1048576,4194304,8388608 --repeat 3 --memory 1e9 --no-plot --out "$BW/gpu" 2>&1 | tee "$BW/gpu.log" | grep -vE "^\|---|^\| device"
+fi
+if [ -n "$CUDA0" ] && command -v ncu >/dev/null; then
+  stamp "ncu: FP64 pipe of aw_ensemble and the naive kernel (N = 2^20, 200 steps, double)"
+  NCU_METRICS=sm__inst_executed_pipe_fp64.avg.pct_of_peak_sustained_active,sm__inst_executed_pipe_fp64.sum,sm__sass_thread_inst_executed_op_dfma_pred_on.sum,sm__sass_thread_inst_executed_op_dadd_pred_on.sum,sm__sass_thread_inst_executed_op_dmul_pred_on.sum,smsp__inst_executed.sum,sm__warps_active.avg.pct_of_peak_sustained_active,launch__registers_per_thread,launch__grid_size,launch__block_size,gpu__time_duration.sum
+  # the command to read the achieved fraction of FP64 peak (also printed for reuse)
+  NCU="ncu --clock-control none -k regex:aw_ensemble|aw_naive --metrics $NCU_METRICS --csv --page raw"
+  echo "$NCU $B --devices $CUDA0 --sizes 1048576 --steps 200 --precision double --variants default --repeat 1"
+  timeout $(left 90) $NCU $B --devices "$CUDA0" --sizes 1048576 --steps 200 --precision double --variants default \
+    --repeat 1 --no-plot --out "$BW/ncu-run" >"$BW/ncu.csv" 2>"$BW/ncu.err"
+  echo "ncu rc=$? ($(grep -c aw_ "$BW/ncu.csv") kernel rows)"; tail -3 "$BW/ncu.err"
+  timeout $(left 45) ncu --clock-control none -k regex:aw_ensemble --metrics sm__pipe_fp64_cycles_active.avg.pct_of_peak_sustained_active,smsp__issue_active.avg.pct_of_peak_sustained_active,smsp__average_warps_issue_stalled_wait_per_issue_active.ratio,smsp__average_warps_issue_stalled_math_pipe_throttle_per_issue_active.ratio --csv --page raw \
+    $B --devices "$CUDA0" --sizes 1048576 --steps 200 --precision double --variants default --repeat 1 --no-baselines \
+    --no-plot --out "$BW/ncu-run2" >"$BW/ncu2.csv" 2>>"$BW/ncu.err" || echo "ncu (extra metrics) failed"
+fi
+if [ -n "$CUDA0" ]; then
+  stamp "Figure 3 end to end: E = 15, 1e8 trajectories, 50 T at 0.01 T (5000 steps)"
+  if [ -f scenes/fig3_e15.toml ]; then FIG3="--scene scenes/fig3_e15.toml"; else
+    FIG3="--scene scenes/default.toml --scene-set ensemble.trajectories=100000000 --scene-set integrator.step=0.01 --scene-set run.average=50 --scene-set run.duration=50"; fi
+  timeout $(left 80) $B --devices "$CUDA0" --no-figure --no-baselines $FIG3 --out "$BW/fig3" 2>&1 | tee "$BW/fig3.log" | grep scene
+fi
+if [ -n "$CPUS" ]; then
+  stamp "bench: CPU devices (cpu backend, PoCL) with the naive OpenMP baseline"
+  timeout $(left 100) $B --devices "$CPUS" --preset gpu --repeat 2 --no-plot --out "$BW/cpu" 2>&1 | tee "$BW/cpu.log" | grep -vE "^\|---|^\| device"
+fi
+stamp "bench: cost of effects (every device)"
+EFF_DEVS=$(echo "$GPUS,cpu" | sed 's/^,//')
+timeout $(left 130) $B --devices "$EFF_DEVS" --no-figure --effects --preset gpu --effects-size 2097152 --repeat 1 --no-plot --out "$BW/effects" \
+  >"$BW/effects.log" 2>&1; echo "effects rc=$?"
+sed -n '/Cost of effects/,$p' "$BW/effects.log" | grep -vE "^\|---"
+
+stamp "bench: combine, plot, targets"
+python3 - "$BW" "$OUT" <<'PY'
+import csv, glob, io, json, os, sys
+bw, out = sys.argv[1], sys.argv[2]
+rows, header = [], None
+for f in sorted(glob.glob(bw + "/*/bench.csv")):
+    if "ncu-run" in f: continue
+    r = list(csv.reader(open(f)))
+    header = header or r[0]
+    rows += r[1:]
+if header:
+    with open(out + "/bench.csv", "w", newline="") as f:
+        w = csv.writer(f); w.writerow(header); w.writerows(rows)
+D = [dict(zip(header, r)) for r in rows] if header else []
+def rate(**k):
+    best = None
+    for d in D:
+        if all(d.get(a) == str(v) for a, v in k.items()) and float(d["rate"] or 0) > 0:
+            if best is None or int(d["trajectories"]) > int(best["trajectories"]): best = d
+    return best
+print("\nTargets (double, Yoshida-6, E = 15):")
+for d in D:
+    if d["kind"] == "library" and d["precision"] == "double" and d["variant"] == "default" and float(d["ratio"] or 0) > 0:
+        pass
+big = {}
+for d in D:
+    if d["kind"] == "library" and d["variant"] == "default" and d["rate"]:
+        k = (d["device"], d["precision"])
+        if k not in big or int(d["trajectories"]) > int(big[k]["trajectories"]): big[k] = d
+for (dev, prec), d in sorted(big.items()):
+    print(f"  {dev:10s} {d['name'][:30]:30s} {prec:6s} N={int(d['trajectories']):>9d} steps={d['steps']:>5s} "
+          f"{float(d['rate']):.3e} traj-steps/s  x{float(d['ratio'] or 0):.2f} {d['baseline']}")
+cu = big.get(("cuda:0", "double"))
+for (dev, prec), d in big.items():
+    if prec == "double" and dev.startswith("opencl") and d["cpu"] == "0" and cu:
+        print(f"  NVIDIA OpenCL / CUDA (double): {float(d['rate']) / float(cu['rate']):.3f}")
+for d in D:
+    if d["kind"] == "scene":
+        print(f"  Figure 3 on {d['device']}: {float(d['seconds'] or 0):.2f} s end to end, {float(d['rate'] or 0):.3e} traj-steps/s; {d['note']}")
+for f in glob.glob(bw + "/*/bench.json"):
+    for m in json.load(open(f)).get("memory", []):
+        print(f"  memory {m['device']} N={m['trajectories']:.0e}: computed {m['computed_bytes']/2**20:.1f} MiB, measured {m['measured_bytes']/2**20:.1f} MiB")
+eff = [d for d in D if d["kind"] == "effects"]
+for d in eff:
+    if d["variant"] == "default" and d["math"] == "native":
+        p = [e for e in eff if e["device"] == d["device"] and e["precision"] == d["precision"] and e["variant"] == "default" and e["math"] == "portable"]
+        if p and float(d["rate"] or 0) > 0:
+            print(f"  portable / native {d['device']:10s} {d['precision']:6s}: {float(p[0]['rate']) / float(d['rate']):.3f}")
+# ncu
+try:
+    lines = open(bw + "/ncu.csv").read().splitlines()
+    start = next(i for i, l in enumerate(lines) if l.startswith('"ID"'))
+    nr = list(csv.reader(io.StringIO("\n".join(lines[start:]))))
+    hdr, data = nr[0], [r for r in nr[2:] if len(r) == len(nr[0])]
+    num = lambda s: float(s.replace(",", "")) if s.replace(",", "").replace(".", "", 1).isdigit() else 0.0
+    best = {}
+    for r in data:
+        d = dict(zip(hdr, r))
+        name = "aw_ensemble" if "aw_ensemble" in d["Kernel Name"] else "naive"
+        g = num(d.get("launch__grid_size", "0"))
+        if name not in best or g > best[name][0]: best[name] = (g, d)
+    with open(out + "/ncu.csv", "w") as f:
+        f.write("\n".join(lines[start:]) + "\n")
+    for name, (g, d) in best.items():
+        ts = 1048576 * 200.0
+        fp64 = num(d["sm__inst_executed_pipe_fp64.sum"]) * 32 / ts
+        ops = sum(num(d[f"sm__sass_thread_inst_executed_op_{o}_pred_on.sum"]) for o in ("dfma", "dadd", "dmul")) / ts
+        print(f"  ncu {name:11s}: FP64 pipe {d['sm__inst_executed_pipe_fp64.avg.pct_of_peak_sustained_active']}% of peak (active), "
+              f"{fp64:.0f} FP64-pipe thread-instr/step, {ops:.0f} DFMA+DADD+DMUL/step, regs {d['launch__registers_per_thread']}, "
+              f"occupancy {d['sm__warps_active.avg.pct_of_peak_sustained_active']}%, {d['gpu__time_duration.sum']} ns")
+except Exception as e:
+    print("  ncu: no metrics (" + str(e) + ")")
+PY
+GPUNAME="$(nvidia-smi --query-gpu=name,driver_version --format=csv,noheader 2>/dev/null | head -1)"
+[ -f "$OUT/bench.csv" ] && { python3 bench/throughput/plot_bench.py "$OUT/bench.csv" "$OUT/bench_throughput.png" "$GPUNAME" ||
+  /usr/bin/python3 bench/throughput/plot_bench.py "$OUT/bench.csv" "$OUT/bench_throughput.png" "$GPUNAME"; } || true
+cp "$BW"/*.log "$BW"/ncu*.csv "$BW"/ncu.err "$OUT/" 2>/dev/null
+for d in "$BW"/*/; do n=$(basename "$d"); for f in "$d"*.csv "$d"*.json; do [ -f "$f" ] && cp "$f" "$OUT/${n}_$(basename "$f")"; done; done
+
 stamp "summary"
 echo "ctest rc=$ctest_rc  parity rc=$parity_rc"
-grep -E "tests passed|tests failed" "$OUT/ctest.txt"
-tail -1 "$OUT/parity.md"
+if [ "$mode" != bench ]; then
+  grep -E "tests passed|tests failed" "$OUT/ctest.txt"
+  tail -1 "$OUT/parity.md"
+fi
+# At most 8 files come back from $OUT: keep the main ones, pack the rest.
+(cd "$OUT" && tar czf /tmp/results.tgz --exclude=results.tgz . && mv /tmp/results.tgz results.tgz &&
+  for f in *; do case $f in results.tgz|summary.txt|bench.csv|bench_throughput.png|ncu.csv|setup.txt) ;; *) rm -rf "$f" ;; esac; done)
+ls "$OUT"

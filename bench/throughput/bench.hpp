@@ -38,6 +38,8 @@ struct Options {
   std::string out_dir = "bench-out";
   bool plot = true;                          // run the plot script if python3 is there
   std::string preset;                        // "ci", "dev", "gpu" (sets the sizes)
+  std::string scene;                         // time this scene end to end on each device
+  std::vector<std::string> scene_sets;       // --set overrides for it
 };
 
 // One measured point.
