@@ -32,11 +32,12 @@ void write_map_hdf5(const std::string& path, const Plan& plan, const Result& res
 void write_states_hdf5(const std::string& path, const Plan& plan, const Result& result);
 
 struct RenderOptions {
-  int width = 900;          // pixels (the sphere view is square)
+  int width = 900;          // pixels
   double view_lon = 45;     // degrees: longitude of the view direction
   double view_lat = 30;     // degrees: latitude of the view direction
-  bool log_scale = true;
-  std::string title;
+  std::string title;        // first line at the top
+  std::string caption;      // small line at the bottom
+  int resonance_order = 0;  // draw and label the circles m.P = 0 with max |m_i| <= this (0: none)
 };
 // Orthographic view of the sphere (like the paper's figures), with colour bar.
 void render_sphere_png(const std::string& path, const std::vector<std::uint64_t>& map, int nside,

@@ -1,11 +1,87 @@
-// STUB: replaced by the output writers.
-#include "arnoldweb/output.hpp"
+// arnoldweb: the output directory of a run. Files are produced in a staging
+// directory beside it and moved into place at the end, so an output directory
+// is either absent or complete; what was computed is never lost.
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
 #include "arnoldweb/errors.hpp"
+#include "arnoldweb/output.hpp"
+#include "output/pictures.hpp"
 
 namespace arnoldweb {
-std::vector<std::string> write_outputs(const Plan&, const Result&, const std::string& dir, bool) {
-  throw OutputError(dir, "writers not implemented yet");
+namespace fs = std::filesystem;
+
+void check_output_dir(const std::string& dir, bool force) {
+  if (dir.empty()) throw OutputError(dir, "no output directory given");
+  std::error_code ec;
+  const fs::path p(dir);
+  if (fs::exists(p, ec)) {
+    if (!force) throw OutputError(dir, "exists; use --force to replace it, or choose another with --out");
+    if (!fs::is_directory(p, ec)) throw OutputError(dir, "exists and is not a directory");
+  }
+  fs::path parent = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  if (parent.empty()) parent = ".";
+  if (!fs::is_directory(parent, ec))
+    throw OutputError(dir, "its parent directory " + parent.string() + " does not exist");
+  if (::access(parent.c_str(), W_OK | X_OK) != 0)
+    throw OutputError(dir, "its parent directory " + parent.string() + " is not writable (" +
+                               std::strerror(errno) + ")");
 }
-void check_output_dir(const std::string&, bool) {}
-std::string summary_json(const Plan&, const Result&) { return "{}"; }
+
+std::vector<std::string> write_outputs(const Plan& plan, const Result& result, const std::string& dir,
+                                       bool force) {
+  check_output_dir(dir, force);
+  const fs::path final_dir(dir);
+  const fs::path staging = final_dir.string() + ".partial-" + std::to_string(::getpid());
+  std::error_code ec;
+  fs::remove_all(staging, ec);
+  if (!fs::create_directories(staging, ec))
+    throw OutputError(staging.string(), "cannot create the staging directory: " + ec.message());
+
+  std::vector<std::string> names;
+  std::string failure;
+  auto attempt = [&](const std::string& name, auto&& write) {
+    if (!failure.empty()) return;
+    try {
+      write((staging / name).string());
+      names.push_back(name);
+    } catch (const Error& e) {
+      failure = e.what();
+    }
+  };
+  attempt("summary.json", [&](const std::string& p) { write_text_file(p, summary_json(plan, result)); });
+  if (!result.map.empty() || !result.zoom.empty())
+    attempt("map.h5", [&](const std::string& p) { write_map_hdf5(p, plan, result); });
+  if (!result.initial_r.empty() || !result.final_r.empty())
+    attempt("states.h5", [&](const std::string& p) { write_states_hdf5(p, plan, result); });
+  if (plan.scene.images && failure.empty()) {
+    try {
+      for (const auto& n : detail::write_pictures(plan, result, staging.string())) names.push_back(n);
+    } catch (const Error& e) {
+      failure = e.what();
+    }
+  }
+
+  // move into place
+  const fs::path old = final_dir.string() + ".old-" + std::to_string(::getpid());
+  if (fs::exists(final_dir, ec)) {
+    fs::rename(final_dir, old, ec);
+    if (ec) throw OutputError(dir, "cannot move the existing directory aside: " + ec.message() +
+                                       " (the results are in " + staging.string() + ")");
+  }
+  fs::rename(staging, final_dir, ec);
+  if (ec) throw OutputError(dir, "cannot move the results into place: " + ec.message() +
+                                     " (they are in " + staging.string() + ")");
+  fs::remove_all(old, ec);
+
+  std::vector<std::string> written;
+  for (const auto& n : names) written.push_back((final_dir / n).string());
+  if (!failure.empty())
+    throw OutputError(dir, "writing stopped: " + failure + "; the files written before are in " + dir);
+  return written;
+}
+
 }  // namespace arnoldweb

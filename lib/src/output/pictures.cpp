@@ -1,0 +1,137 @@
+// arnoldweb: which pictures a run gets, and how they are titled.
+#include "output/pictures.hpp"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "arnoldweb/errors.hpp"
+#include "arnoldweb/version.hpp"
+#include "output/atomic_file.hpp"
+
+namespace arnoldweb::detail {
+namespace {
+
+std::string short_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
+std::string title_of(const Plan& p, const Result& r) {
+  return "E = " + short_number(p.scene.energy) + ",  N = " + short_number(static_cast<double>(r.binned)) +
+         " binned,  dt = " + short_number(p.scene.average) + " T,  " + p.method.name + ",  h = " +
+         short_number(p.step) + " T";
+}
+
+std::string caption_of(const Result& r) {
+  return std::string("arnoldweb ") + ARNOLDWEB_VERSION + " on " + r.device.id + " (" + r.device.name + ")";
+}
+
+bool have_ffmpeg() { return std::system("command -v ffmpeg >/dev/null 2>&1") == 0; }
+
+// frames.mp4 from frames/frame_NNN.png (atomically: ffmpeg writes a temporary).
+void make_movie(const std::string& dir) {
+  const std::string tmp = dir + "/.frames.tmp-" + std::to_string(::getpid()) + ".mp4";
+  const std::string cmd = "ffmpeg -loglevel error -y -framerate 2 -i '" + dir +
+                          "/frames/frame_%03d.png' -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p '" + tmp +
+                          "' </dev/null";
+  const int rc = std::system(cmd.c_str());
+  if (rc != 0 || !std::filesystem::exists(tmp)) {
+    std::remove(tmp.c_str());
+    throw OutputError(dir + "/frames.mp4", "ffmpeg failed (exit " + std::to_string(WEXITSTATUS(rc)) + ")");
+  }
+  sync_file(tmp);
+  if (std::rename(tmp.c_str(), (dir + "/frames.mp4").c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw OutputError(dir + "/frames.mp4", "cannot rename into place");
+  }
+}
+
+}  // namespace
+
+bool initial_centre(const Scene& s, double* lon, double* lat) {
+  if (s.initial == "cap") {
+    *lon = s.cap_center[0];
+    *lat = s.cap_center[1];
+  } else if (s.initial == "box") {
+    *lon = 0.5 * (s.box_lon[0] + s.box_lon[1]);
+    *lat = 0.5 * (s.box_lat[0] + s.box_lat[1]);
+  } else if (s.initial == "gaussian") {
+    *lon = std::atan2(s.gaussian_mean[1], s.gaussian_mean[0]) * 180 / M_PI;
+    *lat = 0;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+#ifdef ARNOLDWEB_HAVE_CAIRO
+std::vector<std::string> write_pictures(const Plan& plan, const Result& r, const std::string& dir) {
+  std::vector<std::string> out;
+  RenderOptions o;
+  o.title = title_of(plan, r);
+  o.caption = caption_of(r);
+  double lon, lat;
+  if (initial_centre(plan.scene, &lon, &lat)) {
+    o.view_lon = lon;
+    o.view_lat = lat;
+  }
+  if (plan.scene.velocity_map) {
+    render_sphere_png(dir + "/map.png", r.map, plan.scene.nside, o);
+    out.push_back("map.png");
+    render_mollweide_png(dir + "/map_mollweide.png", r.map, plan.scene.nside, o);
+    out.push_back("map_mollweide.png");
+    RenderOptions overlay = o;
+    overlay.resonance_order = 2;
+    overlay.title = o.title + ";  circles m.P = 0, |m_i| <= 2";
+    render_sphere_png(dir + "/map_resonances.png", r.map, plan.scene.nside, overlay);
+    out.push_back("map_resonances.png");
+  }
+  if (!r.zoom.empty()) {
+    RenderOptions z = o;
+    z.resonance_order = 3;
+    render_zoom_png(dir + "/zoom.png", r.zoom, plan.zoom_resolution, plan.scene.zoom_center, plan.scene.zoom_width, z);
+    out.push_back("zoom.png");
+  }
+  if (!r.frames.empty()) {
+    std::filesystem::create_directories(dir + "/frames");
+    // one colour scale for the whole movie
+    std::vector<std::uint64_t> all;
+    for (const auto& f : r.frames) all.insert(all.end(), f.begin(), f.end());
+    for (std::size_t k = 0; k < r.frames.size(); ++k) {
+      RenderOptions f = o;
+      f.title = "E = " + short_number(plan.scene.energy) + ",  windows starting in [" +
+                short_number(plan.scene.frame_times[k]) + ", " + short_number(plan.scene.frame_times[k + 1]) + ") T";
+      char name[32];
+      std::snprintf(name, sizeof name, "frames/frame_%03zu.png", k);
+      render_sphere_png(dir + "/" + name, r.frames[k], plan.scene.nside, f);
+      out.push_back(name);
+    }
+    if (have_ffmpeg()) {
+      make_movie(dir);
+      out.push_back("frames.mp4");
+    }
+  }
+  return out;
+}
+#else
+std::vector<std::string> write_pictures(const Plan&, const Result&, const std::string&) { return {}; }
+#endif
+
+}  // namespace arnoldweb::detail
+
+#ifndef ARNOLDWEB_HAVE_CAIRO
+namespace arnoldweb {
+void render_sphere_png(const std::string& path, const std::vector<std::uint64_t>&, int, const RenderOptions&) {
+  throw OutputError(path, "this build has no pictures (cairo was not found when it was configured)");
+}
+void render_mollweide_png(const std::string& path, const std::vector<std::uint64_t>&, int, const RenderOptions&) {
+  throw OutputError(path, "this build has no pictures (cairo was not found when it was configured)");
+}
+}  // namespace arnoldweb
+#endif

@@ -1,0 +1,137 @@
+// arnoldweb: the sphere pictures: an orthographic view like the paper's
+// figures, a Mollweide view of the whole sphere, and the resonance circles
+// m.P = 0 drawn over them.
+#include <cmath>
+#include <cstdio>
+
+#include "arnoldweb/output.hpp"
+#include "arnoldweb/sphere.hpp"
+#include "output/canvas.hpp"
+
+namespace arnoldweb {
+namespace {
+
+using detail::Canvas;
+using detail::LogScale;
+
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Vec3 normalised(const Vec3& a) {
+  const double n = std::sqrt(dot(a, a));
+  return {a[0] / n, a[1] / n, a[2] / n};
+}
+
+// The view: v towards the viewer, e1 to the right (east), e2 up (north).
+struct View {
+  Vec3 v, e1, e2;
+  View(double lon, double lat) {
+    const double lo = lon * M_PI / 180, la = lat * M_PI / 180;
+    v = direction(lon, lat);
+    e1 = {-std::sin(lo), std::cos(lo), 0.0};
+    e2 = {-std::sin(la) * std::cos(lo), -std::sin(la) * std::sin(lo), std::cos(la)};
+  }
+};
+
+void draw_circles(Canvas& c, const View& view, double cx, double cy, double radius, int max_order) {
+  cairo_t* cr = c.cr();
+  for (const Resonance& r : resonances(max_order)) {
+    const Vec3 n = normalised({double(r.m[0]), double(r.m[1]), double(r.m[2])});
+    const Vec3 helper = std::fabs(n[2]) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
+    const Vec3 a = normalised(cross(n, helper)), b = cross(n, a);
+    if (r.order == 1)
+      cairo_set_source_rgba(cr, 1, 1, 1, 0.5);
+    else
+      cairo_set_source_rgba(cr, 0.55, 0.85, 1.0, 0.45);
+    cairo_set_line_width(cr, r.order == 1 ? 1.2 : 0.8);
+    bool pen = false;
+    double best = -1, bx = 0, by = 0;
+    for (int k = 0; k <= 720; ++k) {
+      const double t = k * M_PI / 360;
+      const Vec3 p = {std::cos(t) * a[0] + std::sin(t) * b[0], std::cos(t) * a[1] + std::sin(t) * b[1],
+                      std::cos(t) * a[2] + std::sin(t) * b[2]};
+      const double z = dot(p, view.v);
+      const double x = cx + radius * dot(p, view.e1), y = cy - radius * dot(p, view.e2);
+      if (z > 0) {
+        if (pen)
+          cairo_line_to(cr, x, y);
+        else
+          cairo_move_to(cr, x, y);
+        pen = true;
+        // label where the circle is most face-on, but not at the very centre
+        const double score = z * (1 - z);
+        if (score > best) {
+          best = score;
+          bx = x;
+          by = y;
+        }
+      } else {
+        pen = false;
+      }
+    }
+    cairo_stroke(cr);
+    if (best > 0) c.text(bx + 3, by - 3, r.label(), 9, 0.85, 0.9, 1.0);
+  }
+}
+
+}  // namespace
+
+void render_sphere_png(const std::string& path, const std::vector<std::uint64_t>& map, int nside,
+                       const RenderOptions& o) {
+  const int w = o.width, h = static_cast<int>(o.width * 0.82);
+  Canvas c(w, h);
+  const LogScale scale(map);
+  const View view(o.view_lon, o.view_lat);
+  const double radius = 0.42 * h, cx = 0.44 * w, cy = 0.52 * h;
+  c.paint(static_cast<int>(cx - radius - 1), static_cast<int>(cy - radius - 1), static_cast<int>(2 * radius + 3),
+          static_cast<int>(2 * radius + 3),
+          [&](double px, double py) {
+            const double x = (px - cx) / radius, y = (cy - py) / radius;
+            const double rr = x * x + y * y;
+            if (rr > 1) return -1.0;
+            const double z = std::sqrt(1 - rr);
+            const Vec3 d = {x * view.e1[0] + y * view.e2[0] + z * view.v[0],
+                            x * view.e1[1] + y * view.e2[1] + z * view.v[1],
+                            x * view.e1[2] + y * view.e2[2] + z * view.v[2]};
+            return scale(map[vec2pix_ring(nside, d)]);
+          },
+          2);
+  if (o.resonance_order > 0) draw_circles(c, view, cx, cy, radius, o.resonance_order);
+  c.colour_bar(0.86 * w, 0.16 * h, 0.025 * w, 0.68 * h, scale, "counts");
+  c.text(0.03 * w, 0.05 * h, o.title, 15);
+  char view_text[96];
+  std::snprintf(view_text, sizeof view_text, "orthographic, view from lon %g, lat %g deg", o.view_lon, o.view_lat);
+  c.text(0.03 * w, 0.97 * h, o.caption.empty() ? view_text : o.caption + "   " + view_text, 11, 0.7, 0.7, 0.7);
+  c.save(path);
+}
+
+void render_mollweide_png(const std::string& path, const std::vector<std::uint64_t>& map, int nside,
+                          const RenderOptions& o) {
+  const int w = o.width, h = static_cast<int>(o.width * 0.62);
+  Canvas c(w, h);
+  const LogScale scale(map);
+  const double a = 0.45 * w, cx = 0.5 * w, cy = 0.45 * h;  // semi-axes a and a/2
+  c.paint(static_cast<int>(cx - a - 1), static_cast<int>(cy - a / 2 - 1), static_cast<int>(2 * a + 3),
+          static_cast<int>(a + 3),
+          [&](double px, double py) {
+            const double x = (px - cx) / a * 2 * M_SQRT2, y = (cy - py) / (a / 2) * M_SQRT2;
+            if (x * x / 8 + y * y / 2 > 1) return -1.0;
+            const double theta = std::asin(std::clamp(y / M_SQRT2, -1.0, 1.0));
+            const double lat = std::asin(std::clamp((2 * theta + std::sin(2 * theta)) / M_PI, -1.0, 1.0));
+            const double lon = M_PI * x / (2 * M_SQRT2 * std::cos(theta));
+            if (std::fabs(lon) > M_PI) return -1.0;
+            const Vec3 d = {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
+            return scale(map[vec2pix_ring(nside, d)]);
+          },
+          2);
+  c.colour_bar(0.25 * w, 0.9 * h, 0.5 * w, 0.025 * h, scale, "");
+  c.text(0.03 * w, 0.06 * h, o.title, 15);
+  c.text(0.03 * w, 0.985 * h,
+         (o.caption.empty() ? std::string() : o.caption + "   ") +
+             "Mollweide, longitude 0 at the centre, east to the right; colour: counts (log)",
+         11, 0.7, 0.7, 0.7);
+  c.save(path);
+}
+
+}  // namespace arnoldweb

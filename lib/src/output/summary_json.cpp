@@ -1,0 +1,123 @@
+// arnoldweb: summary.json, the record of a run: what was asked, what ran
+// where, what came out (counts, energy error, digests), how fast.
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <ctime>
+
+#include "arnoldweb/output.hpp"
+#include "arnoldweb/version.hpp"
+
+namespace arnoldweb {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+std::string utc_now() {
+  char buf[32];
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+json scene_values(const Scene& s) {
+  json j;
+  j["model"] = {{"energy", s.energy}};
+  j["ensemble"] = {{"trajectories", s.trajectories}, {"seed", s.seed}, {"initial", s.initial}, {"chunk", s.chunk}};
+  if (s.initial == "cap") j["ensemble"]["cap"] = {{"center", s.cap_center}, {"radius", s.cap_radius}};
+  if (s.initial == "box") j["ensemble"]["box"] = {{"lon", s.box_lon}, {"lat", s.box_lat}};
+  if (s.initial == "gaussian") j["ensemble"]["gaussian"] = {{"mean", s.gaussian_mean}, {"sigma", s.gaussian_sigma}};
+  j["integrator"] = {{"method", s.method},
+                     {"step", s.step_auto ? json("auto") : json(s.step)},
+                     {"tolerance", s.tolerance},
+                     {"precision", to_string(s.precision)},
+                     {"math", to_string(s.math)},
+                     {"allow_unsafe_step", s.allow_unsafe_step}};
+  j["run"] = {{"average", s.average}, {"duration", s.duration}, {"device", s.device}};
+  j["observe"] = {{"velocity_map", s.velocity_map ? json({{"nside", s.nside}}) : json(false)},
+                  {"energy_error", s.energy_error ? json({{"every", s.energy_every}}) : json(false)},
+                  {"max_energy_error", s.max_energy_error ? json(*s.max_energy_error) : json(nullptr)},
+                  {"initial_states", s.initial_states},
+                  {"final_states", s.final_states}};
+  if (s.zoom)
+    j["observe"]["zoom"] = {{"center", s.zoom_center}, {"width", s.zoom_width}, {"resolution", s.zoom_resolution}};
+  if (s.confine) j["observe"]["confine"] = {{"center", s.confine_center}, {"width", s.confine_width}};
+  if (!s.frame_times.empty()) j["observe"]["frames"] = {{"times", s.frame_times}};
+  j["output"] = {{"dir", s.output_dir}, {"images", s.images}};
+  return j;
+}
+
+}  // namespace
+
+std::string summary_json(const Plan& plan, const Result& r) {
+  json j;
+  j["arnoldweb"] = ARNOLDWEB_VERSION;
+  j["date"] = utc_now();
+  j["trajectories"] = r.trajectories;
+  j["completed"] = r.completed;
+  j["interrupted"] = r.interrupted;
+  j["binned"] = r.binned;
+  j["flagged"] = {{"total", r.flagged()},
+                  {"nonfinite", r.flagged_nonfinite},
+                  {"energy", r.flagged_energy},
+                  {"initial", r.flagged_initial}};
+  j["left_region"] = r.left_region;
+  j["energy_error"] = {{"tracked", r.energy.tracked}};
+  if (r.energy.tracked) {
+    j["energy_error"]["max"] = r.energy.max;
+    j["energy_error"]["mean"] = r.energy.mean;
+    j["energy_error"]["median_upper_bound"] = number_or_null(r.energy.quantile(0.5));
+    j["energy_error"]["p99_upper_bound"] = number_or_null(r.energy.quantile(0.99));
+    j["energy_error"]["note"] = "max and mean over binned trajectories of max_t |E(t) - E(0)|; quantiles are "
+                                "upper edges of quarter-octave histogram bins over all trajectories";
+  }
+  j["digests"] = {{"algorithm", "XXH3-128"},
+                  {"map", digest_map(r)},
+                  {"initial_states", digest_initial_states(r)},
+                  {"final_states", digest_final_states(r)}};
+  j["device"] = {{"id", r.device.id},
+                 {"backend", r.device.backend},
+                 {"name", r.device.name},
+                 {"vendor", r.device.vendor},
+                 {"version", r.device.version},
+                 {"compute_units", r.device.compute_units}};
+  j["kernel"] = r.kernel;
+  j["wall_seconds"] = r.wall_seconds;
+  j["trajectory_steps"] = r.trajectory_steps;
+  j["trajectory_steps_per_second"] = r.rate();
+  j["force_evaluations_per_second"] = r.rate() * plan.method.stages;
+  j["seconds_per_trajectory_per_T"] =
+      r.trajectory_steps > 0 ? r.wall_seconds / (static_cast<double>(r.completed) * plan.scene.duration) : 0.0;
+  j["method"] = {{"name", plan.method.name}, {"order", plan.method.order}, {"stages", plan.method.stages}};
+  j["schedule"] = {{"step", plan.step},
+                   {"steps_per_trajectory", plan.steps_per_trajectory},
+                   {"windows", plan.windows},
+                   {"segments_per_window", plan.segments_per_window},
+                   {"steps_per_segment", plan.steps_per_segment}};
+  j["step_guard"] = {{"value", plan.guard.value},
+                     {"limit", plan.guard.limit},
+                     {"advised", plan.guard.advised},
+                     {"safe_step", plan.guard.safe_step},
+                     {"overridden", plan.guard.refused() && plan.scene.allow_unsafe_step}};
+  j["effects"] = plan.effects();
+  j["warnings"] = plan.warnings;
+  std::uint64_t smallest = 0, largest = 0;
+  for (auto c : r.chunks) {
+    smallest = smallest ? std::min(smallest, c) : c;
+    largest = std::max(largest, c);
+  }
+  j["chunks"] = {{"count", r.chunks.size()}, {"smallest", smallest}, {"largest", largest}};
+  j["maps"] = {{"nside", plan.scene.velocity_map ? plan.scene.nside : 0},
+               {"ordering", "RING"},
+               {"frames", plan.frames},
+               {"zoom_resolution", plan.zoom_resolution}};
+  j["scene"] = scene_values(plan.scene);
+  j["scene_toml"] = plan.scene.to_toml();
+  return j.dump(2) + "\n";
+}
+
+}  // namespace arnoldweb
