@@ -95,9 +95,12 @@ AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) {
   pc = AW_FMA(z, pc, AW_LSPLAT(2.48015872894767294178e-05));
   pc = AW_FMA(z, pc, AW_LSPLAT(-1.38888888888741095749e-03));
   pc = AW_FMA(z, pc, AW_LSPLAT(4.16666666666666019037e-02));
-  lreal hz = 0.5 * z;
-  lreal w = 1.0 - hz;
-  lreal cr = w + AW_FMA(z * z, pc, (1.0 - w) - hz);
+  /* fdlibm: hz = 0.5 z, w = 1 - hz, cos r = w + (z^2 pc + ((1 - w) - hz)).
+   * 0.5 z is exact (z normal), so 1 - hz and (1 - w) - hz are one-rounding
+   * fma's of -0.5 and z: the same bits without the multiplication. (z
+   * subnormal: w = 1 and the correction vanishes in w + ..., either way.) */
+  lreal w = AW_FMA(AW_LSPLAT(-0.5), z, AW_LSPLAT(1.0));
+  lreal cr = w + AW_FMA(z * z, pc, AW_FMA(AW_LSPLAT(-0.5), z, 1.0 - w));
 #endif
   AW_QUADRANT_SELECT(t, sr, cr, s, c);
 }
