@@ -23,6 +23,8 @@ std::unique_ptr<Backend> make_cuda_backend(int index);
 #endif
 
 // Helpers shared by the backends.
+// Throws DeviceError if the plan computes in double and the device has no fp64.
+void require_fp64(const Plan& plan, const DeviceInfo& dev);
 // Largest power of two <= n (n >= 1).
 std::uint64_t floor_pow2(std::uint64_t n);
 // Checks that the plan's buffers fit the device; throws SceneError naming the

@@ -90,6 +90,13 @@ std::unique_ptr<Backend> open_backend(const std::string& requested) {
 
 namespace detail {
 
+void require_fp64(const Plan& plan, const DeviceInfo& dev) {
+  if (plan.kernel.precision == Precision::Double && !dev.fp64)
+    throw DeviceError(dev.id, "", 0,
+                      dev.name + " has no double precision (fp64); set integrator.precision = \"float\" "
+                      "or choose another device (arnoldweb devices lists them)");
+}
+
 std::uint64_t floor_pow2(std::uint64_t n) {
   std::uint64_t p = 1;
   while (p * 2 <= n) p *= 2;

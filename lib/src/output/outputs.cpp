@@ -65,6 +65,11 @@ std::vector<std::string> write_outputs(const Plan& plan, const Result& result, c
     }
   }
 
+  if (names.empty()) {  // nothing complete: leave no directory behind
+    fs::remove_all(staging, ec);
+    throw OutputError(dir, "writing failed: " + failure);
+  }
+
   // move into place
   const fs::path old = final_dir.string() + ".old-" + std::to_string(::getpid());
   if (fs::exists(final_dir, ec)) {

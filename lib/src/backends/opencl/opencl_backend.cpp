@@ -78,10 +78,7 @@ class OpenclBackend final : public Backend {
 
   void prepare(const Plan& plan, std::uint64_t max_chunk) override {
     float_ = plan.kernel.precision == Precision::Float;
-    if (!float_ && !info_.fp64)
-      throw DeviceError(info_.id, "", 0,
-                        info_.name + " has no double precision (cl_khr_fp64); set "
-                        "integrator.precision = \"float\" or choose another device");
+    require_fp64(plan, info_);
     check_device_memory(plan, info_, max_chunk, device_.get_info<cl_ulong>(CL_DEVICE_MAX_MEM_ALLOC_SIZE));
     features_ = plan.kernel.features;
     npix_ = plan.hist_size;  // every histogram: frames of the map, then the zoom
@@ -261,7 +258,10 @@ std::vector<DeviceInfo> opencl_devices(std::vector<std::string>& problems) {
   try {
     auto devs = cl_devices();
     for (std::size_t i = 0; i < devs.size(); ++i) out.push_back(describe(devs[i], static_cast<int>(i)));
-    if (devs.empty()) problems.push_back(std::string("opencl: no OpenCL device found; ") + kInstallHint);
+    if (compute::system::platforms().empty())
+      problems.push_back(std::string("opencl: no OpenCL platform found (the ICD loader lists none); ") + kInstallHint);
+    else if (devs.empty())
+      problems.push_back(std::string("opencl: no OpenCL device found; ") + kInstallHint);
   } catch (const compute::opencl_error& e) {
     problems.push_back(std::string("opencl: no OpenCL platform found (clGetPlatformIDs returned ") +
                        std::to_string(e.error_code()) + "); " + kInstallHint);

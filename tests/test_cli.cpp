@@ -1,0 +1,169 @@
+// The arnoldweb command as a user meets it: every bad input gets a clear
+// message naming the problem, a non-zero exit code and no output directory.
+// Exit codes: 2 bad input, 3 output problem, 4 device problem.
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "backends/backends.hpp"
+#include "support.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Case {
+  const char* name;
+  std::string scene;  // TOML written to scene.toml ("" = no file)
+  std::string args;   // after "run <scene>"
+  int code;
+  std::vector<std::string> says;
+};
+
+// A quick valid scene (the bad ones change one thing).
+const std::string kGood =
+    "[model]\nenergy = 15.0\n[ensemble]\ntrajectories = 200\n[integrator]\nstep = 0.02\n"
+    "[run]\naverage = 1.0\nduration = 1.0\n[observe]\nvelocity_map = { nside = 8 }\n"
+    "energy_error = { every = 0.5 }\n";
+
+std::string with(const std::string& section, const std::string& line) {
+  std::string s = kGood;
+  const auto at = s.find("[" + section + "]\n");
+  if (at == std::string::npos) return s + "[" + section + "]\n" + line + "\n";
+  const auto end = at + section.size() + 3;
+  return s.substr(0, end) + line + "\n" + s.substr(end);
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+}  // namespace
+
+TEST_SUITE("cli") {
+  TEST_CASE("bad input: a clear message, a non-zero exit and no output") {
+    const std::vector<Case> cases = {
+        {"missing scene", "", "", 2, {"cannot read the scene file", "No such file"}},
+        {"TOML syntax error", "[model]\nenergy = = 3\n", "", 2, {"scene.toml:2:", "TOML syntax error"}},
+        {"unknown key", with("model", "energie = 3.0"), "", 2, {"model.energie", "unknown key", "did you mean 'model.energy'"}},
+        {"wrong type", with("ensemble", "seed = \"x\""), "", 2, {"ensemble.seed", "must be an integer"}},
+        {"no trajectories", "", "--set ensemble.trajectories=0", 2, {"ensemble.trajectories", "from 1 to 1e13"}},
+        {"absurdly many trajectories", "", "--set ensemble.trajectories=100000000000000", 2, {"from 1 to 1e13"}},
+        {"no accessible phase space", "", "--set model.energy=-2.5", 2, {"model.energy", "greater than -2"}},
+        {"most of the torus forbidden", "", "--set model.energy=-1.97", 2, {"model.energy", "accessible", "choose E >="}},
+        {"step <= 0", "", "--set integrator.step=0", 2, {"integrator.step", "greater than 0"}},
+        {"step not finite", "", "--set integrator.step=nan", 2, {"integrator.step", "greater than 0"}},
+        {"average not a multiple of the step", "", "--set run.average=1.01 --set run.duration=1.01", 2,
+         {"run.average", "not a positive multiple of integrator.step"}},
+        {"duration not a multiple of the average", "", "--set run.duration=1.5", 2, {"run.duration", "multiple of run.average"}},
+        {"nside not a power of two", "", "--set observe.velocity_map.nside=100", 2, {"nside", "power of two"}},
+        {"unknown method", "", "--set integrator.method=rk4", 2, {"integrator.method", "yoshida6a"}},
+        {"unknown device", "", "--device opencl:99", 4, {"opencl:99", "no such device", "cpu"}},
+        {"malformed device", "", "--device gpu", 2, {"run.device", "\"cpu\""}},
+        {"unsafe step", "", "--set model.energy=400 --set integrator.step=0.01", 2, {"unsafe", "0.004"}},
+    };
+    for (const Case& c : cases) {
+      const std::string name = c.name;
+      CAPTURE(name);
+      const std::string dir = awtest::temp_dir("cli");
+      const std::string scene = dir + "/scene.toml";
+      const std::string text = name == "missing scene" ? "" : c.scene.empty() ? kGood : c.scene;
+      if (!text.empty()) std::ofstream(scene) << text;
+      std::string out;
+      const std::string device = contains(c.args, "--device") ? "" : " --device cpu";
+      const int rc = awtest::run_cli("run " + scene + " --quiet" + device + " --out " + dir + "/out " + c.args, &out);
+      CAPTURE(out);
+      CHECK(rc == c.code);
+      for (const auto& s : c.says) CHECK(contains(out, s));
+      CHECK_FALSE(fs::exists(dir + "/out"));
+    }
+  }
+
+  TEST_CASE("nside too large for the device's memory names the key") {
+    const std::string dir = awtest::temp_dir("cli");
+    std::ofstream(dir + "/scene.toml") << kGood;
+    std::string out;
+    // 12 * 8192^2 pixels need 9.7 GB; PoCL and small GPUs refuse, as does a machine with < 19 GB
+    const std::string device = awtest::devices_under_test().size() > 1 ? "opencl:0" : "cpu";
+    const int rc = awtest::run_cli("run " + dir + "/scene.toml --quiet --device " + device + " --out " + dir +
+                                       "/out --set observe.velocity_map.nside=8192 --set ensemble.trajectories=1",
+                                   &out);
+    CAPTURE(out);
+    if (rc == 0) {
+      MESSAGE("this device has room for an nside 8192 map; nothing to refuse");
+    } else {
+      CHECK(rc == 2);
+      CHECK(contains(out, "observe.velocity_map.nside"));
+      CHECK(contains(out, "MiB"));
+    }
+  }
+
+  TEST_CASE("an existing output directory is refused (exit 3) and left untouched") {
+    const std::string dir = awtest::temp_dir("cli");
+    std::ofstream(dir + "/scene.toml") << kGood;
+    fs::create_directories(dir + "/out");
+    std::ofstream(dir + "/out/mine.txt") << "mine";
+    std::string out;
+    CHECK(awtest::run_cli("run " + dir + "/scene.toml --quiet --device cpu --out " + dir + "/out", &out) == 3);
+    CHECK(contains(out, "exists; use --force"));
+    CHECK(fs::exists(dir + "/out/mine.txt"));
+    CHECK(awtest::run_cli("run " + dir + "/scene.toml --quiet --device cpu --force --out " + dir + "/out", &out) == 0);
+    CHECK(fs::exists(dir + "/out/summary.json"));
+  }
+
+  TEST_CASE("without any OpenCL platform: devices says how to install PoCL; opencl runs fail cleanly") {
+    const std::string empty = awtest::temp_dir("icd");
+    std::string out;
+    CHECK(awtest::run_cli("devices", &out) == 0);
+    const std::string env = "OCL_ICD_VENDORS=" + empty + " ";
+    const int rc = std::system((env + ARNOLDWEB_CLI + " devices > " + empty + "/devices.txt 2>&1").c_str());
+    CHECK(WEXITSTATUS(rc) == 0);
+    std::ifstream f(empty + "/devices.txt");
+    const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    CAPTURE(text);
+    CHECK(contains(text, "no OpenCL platform found"));
+    CHECK(contains(text, "pocl-opencl-icd"));
+    CHECK(contains(text, "cpu"));
+    std::ofstream(empty + "/scene.toml") << kGood;
+    const int rc2 = std::system((env + ARNOLDWEB_CLI + " run " + empty + "/scene.toml --quiet --device opencl:0 --out " +
+                                 empty + "/out > " + empty + "/run.txt 2>&1")
+                                    .c_str());
+    CHECK(WEXITSTATUS(rc2) == 4);
+    std::ifstream g(empty + "/run.txt");
+    const std::string run_text((std::istreambuf_iterator<char>(g)), std::istreambuf_iterator<char>());
+    CHECK(contains(run_text, "pocl-opencl-icd"));
+    CHECK_FALSE(fs::exists(empty + "/out"));
+  }
+
+  TEST_CASE("double precision on a device without fp64 is refused with a way out") {
+    arnoldweb::Scene s;
+    s.file = "<fp64>";
+    const arnoldweb::Plan p = arnoldweb::make_plan(s);
+    arnoldweb::DeviceInfo d;
+    d.id = "opencl:7";
+    d.name = "Some GPU";
+    d.fp64 = false;
+    CHECK_THROWS_WITH_AS(arnoldweb::detail::require_fp64(p, d), doctest::Contains("integrator.precision = \"float\""),
+                         arnoldweb::DeviceError);
+    d.fp64 = true;
+    CHECK_NOTHROW(arnoldweb::detail::require_fp64(p, d));
+    s.precision = arnoldweb::Precision::Float;
+    d.fp64 = false;
+    CHECK_NOTHROW(arnoldweb::detail::require_fp64(arnoldweb::make_plan(s), d));
+  }
+
+  TEST_CASE("check prints the plan; every command has --help") {
+    const std::string dir = awtest::temp_dir("cli");
+    std::ofstream(dir + "/scene.toml") << kGood;
+    std::string out;
+    CHECK(awtest::run_cli("check " + dir + "/scene.toml", &out) == 0);
+    CHECK(contains(out, "effects      velocity_map, energy_error"));
+    CHECK(contains(out, "work"));
+    for (const char* cmd : {"", "devices ", "methods ", "check ", "run ", "keys "}) {
+      CAPTURE(cmd);
+      CHECK(awtest::run_cli(std::string(cmd) + "--help", &out) == 0);
+      CHECK(contains(out, "Usage"));
+    }
+    CHECK(awtest::run_cli("frobnicate", &out) == 2);
+  }
+}

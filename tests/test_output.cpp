@@ -1,0 +1,192 @@
+// Outputs: summary.json, map.h5, states.h5 and pictures hold what the run
+// computed; output directories are refused, replaced or left alone as asked;
+// a write that fails leaves no partial file.
+#include <doctest/doctest.h>
+#include <hdf5.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <nlohmann/json.hpp>
+
+#include "aw_params.h"
+#include "support.hpp"
+
+#ifdef ARNOLDWEB_HAVE_CAIRO
+#include <cairo.h>
+#endif
+
+using namespace arnoldweb;
+namespace fs = std::filesystem;
+
+namespace {
+
+Plan small_plan(int nside = 16) {
+  Scene s;
+  s.file = "<output>";
+  s.trajectories = 400;
+  s.step = 0.02;
+  s.average = s.duration = 2;
+  s.energy_every = 1;
+  s.nside = nside;
+  s.final_states = true;
+  s.initial_states = true;
+  s.zoom = true;
+  s.zoom_resolution = 32;
+  return make_plan(s);
+}
+
+const Result& small_result() {
+  static const Result r = awtest::run_on("cpu", small_plan());
+  return r;
+}
+
+std::vector<std::uint64_t> read_u64(const std::string& file, const char* dataset, std::int64_t* nside) {
+  hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  REQUIRE(f >= 0);
+  hid_t d = H5Dopen2(f, dataset, H5P_DEFAULT);
+  REQUIRE(d >= 0);
+  hid_t space = H5Dget_space(d);
+  const hssize_t n = H5Sget_simple_extent_npoints(space);
+  std::vector<std::uint64_t> v(static_cast<std::size_t>(n));
+  CHECK(H5Dread(d, H5T_NATIVE_UINT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) >= 0);
+  if (nside) {
+    hid_t a = H5Aopen(d, "nside", H5P_DEFAULT);
+    REQUIRE(a >= 0);
+    H5Aread(a, H5T_NATIVE_INT64, nside);
+    H5Aclose(a);
+  }
+  H5Sclose(space);
+  H5Dclose(d);
+  H5Fclose(f);
+  return v;
+}
+
+bool has_temporaries(const fs::path& dir) {
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.path().filename().string().find(".tmp-") != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_SUITE("output") {
+  TEST_CASE("summary.json records counts, energy error, digests, device and the scene") {
+    const Plan p = small_plan();
+    const Result& r = small_result();
+    const auto j = nlohmann::json::parse(summary_json(p, r));
+    CHECK(j["trajectories"] == 400);
+    CHECK(j["binned"].get<std::uint64_t>() + j["flagged"]["total"].get<std::uint64_t>() == 400);
+    CHECK(j["energy_error"]["max"].get<double>() == r.energy.max);
+    CHECK(j["energy_error"]["mean"].get<double>() == r.energy.mean);
+    CHECK(j["digests"]["map"] == digest_map(r));
+    CHECK(j["digests"]["final_states"] == digest_final_states(r));
+    CHECK(j["device"]["id"] == "cpu");
+    CHECK(j["trajectory_steps_per_second"].get<double>() > 0);
+    CHECK(j["scene"]["model"]["energy"] == 15.0);
+    CHECK(j["scene_toml"].get<std::string>().find("[integrator]") != std::string::npos);
+    CHECK(j["schedule"]["steps_per_trajectory"] == 100);
+    CHECK(j["effects"].size() >= 4);
+  }
+
+  TEST_CASE("map.h5 and states.h5 hold the result, with nside and ordering") {
+    const Plan p = small_plan();
+    const Result& r = small_result();
+    const std::string dir = awtest::temp_dir("h5") + "/out";
+    const auto files = write_outputs(p, r, dir, false);
+    std::int64_t nside = 0;
+    CHECK(read_u64(dir + "/map.h5", "map", &nside) == r.map);
+    CHECK(nside == 16);
+    CHECK(read_u64(dir + "/map.h5", "zoom", nullptr) == r.zoom);
+    // states: momenta of the final states
+    hid_t f = H5Fopen((dir + "/states.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    REQUIRE(f >= 0);
+    hid_t d = H5Dopen2(f, "final/momentum", H5P_DEFAULT);
+    std::vector<double> mom(400 * 3);
+    CHECK(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, mom.data()) >= 0);
+    H5Dclose(d);
+    H5Fclose(f);
+    CHECK(mom[3 * 7 + 2] == r.final_r[7 * AW_STATE_REALS + 5]);
+    CHECK_FALSE(has_temporaries(dir));
+    CHECK_FALSE(fs::exists(dir + ".partial-" + std::to_string(::getpid())));
+  }
+
+#ifdef ARNOLDWEB_HAVE_CAIRO
+  TEST_CASE("pictures are PNGs of the right size, not blank") {
+    const Plan p = small_plan();
+    const std::string dir = awtest::temp_dir("png") + "/out";
+    write_outputs(p, small_result(), dir, false);
+    for (const char* name : {"map.png", "map_mollweide.png", "map_resonances.png", "zoom.png"}) {
+      CAPTURE(name);
+      cairo_surface_t* s = cairo_image_surface_create_from_png((dir + "/" + name).c_str());
+      REQUIRE(cairo_surface_status(s) == CAIRO_STATUS_SUCCESS);
+      CHECK(cairo_image_surface_get_width(s) == 900);
+      const unsigned char* data = cairo_image_surface_get_data(s);
+      const int stride = cairo_image_surface_get_stride(s);
+      std::set<std::uint32_t> colours;
+      for (int y = 0; y < cairo_image_surface_get_height(s); y += 7)
+        for (int x = 0; x < 900; x += 7) colours.insert(*reinterpret_cast<const std::uint32_t*>(data + y * stride + 4 * x));
+      CHECK(colours.size() > 20);
+      cairo_surface_destroy(s);
+    }
+  }
+#endif
+
+  TEST_CASE("an existing output directory is refused without force and replaced with it") {
+    const Plan p = small_plan();
+    const std::string dir = awtest::temp_dir("exists") + "/out";
+    fs::create_directories(dir);
+    std::ofstream(dir + "/keep.txt") << "old";
+    CHECK_THROWS_AS(write_outputs(p, small_result(), dir, false), OutputError);
+    CHECK(fs::exists(dir + "/keep.txt"));
+    CHECK_FALSE(fs::exists(dir + "/summary.json"));
+    write_outputs(p, small_result(), dir, true);
+    CHECK(fs::exists(dir + "/summary.json"));
+    CHECK_FALSE(fs::exists(dir + "/keep.txt"));
+  }
+
+  TEST_CASE("a write that fails (full disk) leaves no partial file and keeps what was complete") {
+    // a file-size limit makes writes fail as a full disk would (EFBIG)
+    const Plan p = small_plan(128);
+    const Result r = awtest::run_on("cpu", p);
+    // the limit lies between the sizes of summary.json and map.h5
+    const std::string probe = awtest::temp_dir("probe") + "/out";
+    write_outputs(p, r, probe, false);
+    const auto summary_size = fs::file_size(probe + "/summary.json");
+    const auto map_size = fs::file_size(probe + "/map.h5");
+    REQUIRE(map_size > summary_size + 1024);
+    const rlim_t limit = static_cast<rlim_t>((summary_size + map_size) / 2);
+    const std::string dir = awtest::temp_dir("full") + "/out";
+    const pid_t child = fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+      std::signal(SIGXFSZ, SIG_IGN);
+      rlimit lim{limit, limit};
+      setrlimit(RLIMIT_FSIZE, &lim);
+      try {
+        write_outputs(p, r, dir, false);
+      } catch (const OutputError&) {
+        _exit(3);
+      }
+      _exit(0);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 3);
+    CHECK(fs::exists(dir + "/summary.json"));  // complete, kept
+    CHECK_FALSE(fs::exists(dir + "/map.h5"));  // failed: no partial file
+    CHECK_FALSE(has_temporaries(fs::path(dir)));
+    for (const auto& e : fs::directory_iterator(fs::path(dir).parent_path()))
+      CHECK(e.path().filename().string().find(".partial-") == std::string::npos);
+  }
+
+  TEST_CASE("an output directory whose parent is missing is refused before any work") {
+    CHECK_THROWS_WITH_AS(check_output_dir("/nonexistent-arnoldweb/x/out", false),
+                         doctest::Contains("does not exist"), OutputError);
+  }
+}
