@@ -7,7 +7,19 @@
 #include "aw_ensemble.h"
 #include "aw_reduce.h"
 
-extern "C" __global__ void aw_ensemble(aw_u64 chunk_first, aw_u64 chunk_end, const real* rp,
+/* Occupancy. The kernel is bound by FP64 latency at the 4 resident blocks of
+ * 128 threads that ~100 registers allow per SM (ncu on an H200: FP64 pipe 74%
+ * busy, 16 warps/SM). Asking for AW_CUDA_MIN_BLOCKS blocks makes ptxas fit
+ * the registers (64 for 8: 32 warps/SM); what spills is live only across energy samples
+ * and windows, never inside the step loop (bench/NOTES.md). Blocks larger
+ * than AW_CUDA_MAX_BLOCK are refused by the launch; the backend clamps. */
+#ifndef AW_CUDA_MAX_BLOCK
+#define AW_CUDA_MAX_BLOCK 128
+#endif
+#ifndef AW_CUDA_MIN_BLOCKS
+#define AW_CUDA_MIN_BLOCKS 8
+#endif
+extern "C" __global__ void __launch_bounds__(AW_CUDA_MAX_BLOCK, AW_CUDA_MIN_BLOCKS) aw_ensemble(aw_u64 chunk_first, aw_u64 chunk_end, const real* rp,
                                        const aw_i64* ip, aw_u32* map, aw_u32* counters,
                                        real* initial_r, real* final_r, aw_i64* final_i,
                                        real* group_stats) {

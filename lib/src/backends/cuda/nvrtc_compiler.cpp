@@ -5,6 +5,7 @@
 #include <nvrtc.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <sstream>
 
 #include "arnoldweb/errors.hpp"
@@ -122,6 +123,12 @@ std::vector<std::string> nvrtc_options(const std::string& defines, const CudaTar
   std::istringstream in(defines);
   std::string word;
   while (in >> word) o.push_back(word);
+  // Tuning hook (bench/NOTES.md): extra NVRTC options, e.g.
+  // ARNOLDWEB_NVRTC_OPTIONS=-DAW_CUDA_MIN_BLOCKS=6. Part of the cache key.
+  if (const char* extra = std::getenv("ARNOLDWEB_NVRTC_OPTIONS")) {
+    std::istringstream ex(extra);
+    while (ex >> word) o.push_back(word);
+  }
   return o;
 }
 
