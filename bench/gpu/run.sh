@@ -95,6 +95,14 @@ if [ -n "$GPUS" ]; then
   stamp "bench: GPUs, N up to 8.4e6 x 2000 steps, naive CUDA baseline, memory of a 1e9 map run"
   timeout $(left 160) $B --devices "$GPUS" --preset gpu --sizes 65536,262144,1048576,4194304,8388608 --repeat 3 --memory 1e9 --no-plot --out "$BW/gpu" 2>&1 | tee "$BW/gpu.log" | grep -vE "^\|---|^\| device"
 fi
+if [ -n "$CUDA0" ]; then
+  stamp "occupancy sweep: AW_CUDA_MIN_BLOCKS (launch bounds) 4, 6, 8 on $CUDA0 (N = 4194304, 2000 steps)"
+  for mb in 4 6 8; do
+    ARNOLDWEB_NVRTC_OPTIONS="-DAW_CUDA_MIN_BLOCKS=$mb" timeout $(left 40) $B --devices "$CUDA0" --sizes 4194304 \
+      --steps 2000 --precision double,float --variants default --no-baselines --repeat 3 --no-plot \
+      --out "$BW/minblocks$mb" 2>&1 | grep -E "^\| cuda" | sed "s/^/min_blocks=$mb /"
+  done
+fi
 if [ -n "$CUDA0" ] && command -v ncu >/dev/null; then
   stamp "ncu: FP64 pipe of aw_ensemble and the naive kernel (N = 2^20, 200 steps, double)"
   NCU_METRICS=sm__inst_executed_pipe_fp64.avg.pct_of_peak_sustained_active,sm__inst_executed_pipe_fp64.sum,sm__sass_thread_inst_executed_op_dfma_pred_on.sum,sm__sass_thread_inst_executed_op_dadd_pred_on.sum,sm__sass_thread_inst_executed_op_dmul_pred_on.sum,smsp__inst_executed.sum,sm__warps_active.avg.pct_of_peak_sustained_active,launch__registers_per_thread,launch__grid_size,launch__block_size,gpu__time_duration.sum
