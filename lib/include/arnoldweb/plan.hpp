@@ -42,6 +42,25 @@ struct StepGuard {
 };
 StepGuard step_guard(double energy, double step, double average, double energy_every);
 
+// How integrator.step = "auto" was resolved (make_plan; accuracy.hpp). The
+// plan's scene then holds the chosen method and step, so that the scene as run
+// reproduces the run without a pilot.
+struct AutoStep {
+  bool used = false;               // the scene asked for step = "auto"
+  double tolerance = 0;            // integrator.tolerance: target max|dE|
+  double safety = 0;               // the pilot's max|dE| x safety <= tolerance
+  bool method_chosen = false;      // the pilot chose the method too (integrator.method not written)
+  std::string method;              // the method chosen (or written)
+  double step = 0;                 // the step chosen, in T
+  double predicted_max = 0;        // pilot max|dE| predicted by the fit at that step
+  double pilot_max = -1;           // measured at that method and step on the pilot ensemble
+  double pilot_median = -1;
+  std::uint64_t pilot_trajectories = 0;
+  double pilot_duration = 0;       // in T
+  std::string pilot_device;        // where the pilot ran
+  double pilot_seconds = 0;
+};
+
 struct Plan {
   Scene scene;
   Method method;
@@ -63,6 +82,7 @@ struct Plan {
   double accessible_fraction = 1;       // of the torus, for the initial states
   StepGuard guard;
   std::vector<std::string> warnings;
+  AutoStep auto_step;                   // integrator.step = "auto": the choice and its pilot
 
   // Kernel parameter buffers (layout: lib/device/aw_params.h).
   std::vector<double> rp;
@@ -73,7 +93,9 @@ struct Plan {
 
 // Validate the scene as a whole and build the plan. Throws SceneError for
 // values that are wrong together (average not a multiple of the step, ...),
-// naming the key and its position.
+// naming the key and its position. For integrator.step = "auto" the step (and
+// the method, unless the scene names one) is chosen by a pilot ensemble on the
+// cpu backend; make_plan(scene, backend) in accuracy.hpp runs it elsewhere.
 Plan make_plan(const Scene& scene);
 
 // Fraction of the torus where V(X) < E (Monte Carlo with a fixed seed).

@@ -7,6 +7,8 @@
 #include <limits>
 #include <sstream>
 
+#include "arnoldweb/accuracy.hpp"
+#include "arnoldweb/device.hpp"
 #include "arnoldweb/errors.hpp"
 #include "aw_model.h"
 #include "aw_params.h"
@@ -163,10 +165,12 @@ Plan make_plan(const Scene& scene) {
   }
 
   // ---- step schedule
-  if (scene.step_auto)
-    fail(scene, "integrator.step",
-         "\"auto\" needs an accuracy pilot; run `arnoldweb accuracy` for a recommendation "
-         "(automatic choice is not available in this version)");
+  if (scene.step_auto) {
+    // a pilot ensemble chooses the step (accuracy.cpp); the cpu backend
+    // computes the same bits as every device in portable math
+    auto cpu = open_backend("cpu");
+    return make_plan(scene, *cpu);
+  }
   p.step = scene.step;
   const std::int64_t per_window = exact_ratio(scene.average, p.step);
   if (per_window == 0)
