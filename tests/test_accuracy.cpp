@@ -53,6 +53,12 @@ TEST_SUITE("core") {
                 a.method.c_str(), a.step, a.pilot_max, r.energy.max);
     CHECK(r.energy.max <= 1e-7);
     CHECK(r.energy.max > 1e-7 / 1000);  // and not needlessly accurate (expensive)
+    // summary.json records the choice; its scene holds the step that ran
+    const std::string json = summary_json(p, r);
+    CHECK(contains(json, "\"auto_step\": {"));
+    CHECK(contains(json, "\"method\": \"" + a.method + "\""));
+    CHECK(contains(json, "\"pilot_device\": \"cpu\""));
+    CHECK(contains(json, "\"tolerance\": 1e-07"));
   }
 
   TEST_CASE("auto: a method written in the scene is kept, only the step is chosen") {

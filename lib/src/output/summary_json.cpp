@@ -117,6 +117,21 @@ std::string summary_json(const Plan& plan, const Result& r) {
                {"zoom_resolution", plan.zoom_resolution}};
   j["scene"] = scene_values(plan.scene);
   j["scene_toml"] = plan.scene.to_toml();
+  if (plan.auto_step.used) {  // integrator.step = "auto": the choice and its pilot (accuracy.hpp)
+    const AutoStep& a = plan.auto_step;
+    j["auto_step"] = {{"tolerance", a.tolerance},
+                      {"safety", a.safety},
+                      {"method", a.method},
+                      {"method_chosen", a.method_chosen},
+                      {"step", a.step},
+                      {"pilot_max_predicted", number_or_null(a.predicted_max)},
+                      {"pilot_max", number_or_null(a.pilot_max)},
+                      {"pilot_median_upper_bound", number_or_null(a.pilot_median)},
+                      {"pilot_trajectories", a.pilot_trajectories},
+                      {"pilot_duration", a.pilot_duration},
+                      {"pilot_device", a.pilot_device},
+                      {"pilot_seconds", a.pilot_seconds}};
+  }
   return j.dump(2) + "\n";
 }
 
