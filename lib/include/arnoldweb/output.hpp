@@ -46,4 +46,20 @@ void render_sphere_png(const std::string& path, const std::vector<std::uint64_t>
 void render_mollweide_png(const std::string& path, const std::vector<std::uint64_t>& map,
                           int nside, const RenderOptions& options);
 
+// A figure of several runs of one scene: the main run's sphere with the zoom
+// regions of its panels marked, and each panel's zoom beside it (the paper's
+// Figures 2 and 3).
+struct FigurePanel {
+  std::string name, title;
+  const Plan* plan = nullptr;
+  const Result* result = nullptr;
+};
+void render_figure_png(const std::string& path, const Plan& plan, const Result& result,
+                       const std::vector<FigurePanel>& panels, const RenderOptions& options);
+
+// Writes figure.png for a run and its panels into `dir` (nothing if the build
+// has no pictures); returns the path written, or "".
+std::string write_figure(const std::string& dir, const Plan& plan, const Result& result,
+                         const std::vector<FigurePanel>& panels);
+
 }  // namespace arnoldweb

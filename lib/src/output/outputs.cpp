@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "arnoldweb/analysis.hpp"
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/output.hpp"
 #include "output/pictures.hpp"
@@ -57,6 +58,16 @@ std::vector<std::string> write_outputs(const Plan& plan, const Result& result, c
     attempt("map.h5", [&](const std::string& p) { write_map_hdf5(p, plan, result); });
   if (!result.initial_r.empty() || !result.final_r.empty())
     attempt("states.h5", [&](const std::string& p) { write_states_hdf5(p, plan, result); });
+  double lon, lat;
+  if (!result.frames.empty() && detail::initial_centre(plan.scene, &lon, &lat))
+    attempt("frames_spread.csv", [&](const std::string& p) {
+      const Vec3 c = direction(lon, lat);
+      std::string csv = "t_from,t_to,spread\n";
+      for (std::size_t k = 0; k < result.frames.size(); ++k)
+        csv += std::to_string(plan.scene.frame_times[k]) + "," + std::to_string(plan.scene.frame_times[k + 1]) + "," +
+               std::to_string(2 * plan.scene.energy * direction_spread(result.frames[k], plan.scene.nside, c)) + "\n";
+      write_text_file(p, csv);
+    });
   if (plan.scene.images && failure.empty()) {
     try {
       for (const auto& n : detail::write_pictures(plan, result, staging.string())) names.push_back(n);

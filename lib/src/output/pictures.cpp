@@ -54,6 +54,26 @@ void make_movie(const std::string& dir) {
 
 }  // namespace
 
+RenderOptions picture_options(const Plan& plan, const Result& r) {
+  RenderOptions o;
+  o.title = title_of(plan, r);
+  o.caption = caption_of(r);
+  double lon, lat;
+  if (initial_centre(plan.scene, &lon, &lat)) {
+    o.view_lon = lon;
+    o.view_lat = lat;
+  }
+  return o;
+}
+
+bool pictures_available() {
+#ifdef ARNOLDWEB_HAVE_CAIRO
+  return true;
+#else
+  return false;
+#endif
+}
+
 bool initial_centre(const Scene& s, double* lon, double* lat) {
   if (s.initial == "cap") {
     *lon = s.cap_center[0];
@@ -73,14 +93,7 @@ bool initial_centre(const Scene& s, double* lon, double* lat) {
 #ifdef ARNOLDWEB_HAVE_CAIRO
 std::vector<std::string> write_pictures(const Plan& plan, const Result& r, const std::string& dir) {
   std::vector<std::string> out;
-  RenderOptions o;
-  o.title = title_of(plan, r);
-  o.caption = caption_of(r);
-  double lon, lat;
-  if (initial_centre(plan.scene, &lon, &lat)) {
-    o.view_lon = lon;
-    o.view_lat = lat;
-  }
+  const RenderOptions o = picture_options(plan, r);
   if (plan.scene.velocity_map) {
     render_sphere_png(dir + "/map.png", r.map, plan.scene.nside, o);
     out.push_back("map.png");
@@ -125,12 +138,34 @@ std::vector<std::string> write_pictures(const Plan&, const Result&, const std::s
 
 }  // namespace arnoldweb::detail
 
+namespace arnoldweb {
+std::string write_figure(const std::string& dir, const Plan& plan, const Result& result,
+                         const std::vector<FigurePanel>& panels) {
+  if (!detail::pictures_available() || !plan.scene.images || !plan.scene.velocity_map) return "";
+  RenderOptions o = detail::picture_options(plan, result);
+  o.width = 1400;
+  o.resonance_order = 1;
+  // look at the panels' regions
+  if (!panels.empty() && panels.front().plan) {
+    o.view_lon = panels.front().plan->scene.zoom_center[0];
+    o.view_lat = panels.front().plan->scene.zoom_center[1];
+  }
+  const std::string path = dir + "/figure.png";
+  render_figure_png(path, plan, result, panels, o);
+  return path;
+}
+}  // namespace arnoldweb
+
 #ifndef ARNOLDWEB_HAVE_CAIRO
 namespace arnoldweb {
 void render_sphere_png(const std::string& path, const std::vector<std::uint64_t>&, int, const RenderOptions&) {
   throw OutputError(path, "this build has no pictures (cairo was not found when it was configured)");
 }
 void render_mollweide_png(const std::string& path, const std::vector<std::uint64_t>&, int, const RenderOptions&) {
+  throw OutputError(path, "this build has no pictures (cairo was not found when it was configured)");
+}
+void render_figure_png(const std::string& path, const Plan&, const Result&, const std::vector<FigurePanel>&,
+                       const RenderOptions&) {
   throw OutputError(path, "this build has no pictures (cairo was not found when it was configured)");
 }
 }  // namespace arnoldweb

@@ -34,4 +34,9 @@ void render_zoom_png(const std::string& path, const std::vector<std::uint64_t>& 
 // views of ensembles that start in one place; false for "shell".
 bool initial_centre(const Scene& scene, double* lon, double* lat);
 
+bool pictures_available();  // false: built without cairo
+
+// Title, caption and view of a run's pictures.
+RenderOptions picture_options(const Plan& plan, const Result& result);
+
 }  // namespace arnoldweb::detail

@@ -1,18 +1,17 @@
 // arnoldweb: the sphere pictures: an orthographic view like the paper's
 // figures, a Mollweide view of the whole sphere, and the resonance circles
-// m.P = 0 drawn over them.
+// m.P = 0 and zoom squares drawn over them.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "arnoldweb/output.hpp"
 #include "arnoldweb/sphere.hpp"
 #include "output/canvas.hpp"
+#include "output/sphere_view.hpp"
 
-namespace arnoldweb {
+namespace arnoldweb::detail {
 namespace {
-
-using detail::Canvas;
-using detail::LogScale;
 
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 Vec3 cross(const Vec3& a, const Vec3& b) {
@@ -23,67 +22,40 @@ Vec3 normalised(const Vec3& a) {
   return {a[0] / n, a[1] / n, a[2] / n};
 }
 
-// The view: v towards the viewer, e1 to the right (east), e2 up (north).
-struct View {
-  Vec3 v, e1, e2;
-  View(double lon, double lat) {
-    const double lo = lon * M_PI / 180, la = lat * M_PI / 180;
-    v = direction(lon, lat);
-    e1 = {-std::sin(lo), std::cos(lo), 0.0};
-    e2 = {-std::sin(la) * std::cos(lo), -std::sin(la) * std::sin(lo), std::cos(la)};
-  }
-};
-
-void draw_circles(Canvas& c, const View& view, double cx, double cy, double radius, int max_order) {
-  cairo_t* cr = c.cr();
-  for (const Resonance& r : resonances(max_order)) {
-    const Vec3 n = normalised({double(r.m[0]), double(r.m[1]), double(r.m[2])});
-    const Vec3 helper = std::fabs(n[2]) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
-    const Vec3 a = normalised(cross(n, helper)), b = cross(n, a);
-    if (r.order == 1)
-      cairo_set_source_rgba(cr, 1, 1, 1, 0.5);
-    else
-      cairo_set_source_rgba(cr, 0.55, 0.85, 1.0, 0.45);
-    cairo_set_line_width(cr, r.order == 1 ? 1.2 : 0.8);
-    bool pen = false;
-    double best = -1, bx = 0, by = 0;
-    for (int k = 0; k <= 720; ++k) {
-      const double t = k * M_PI / 360;
-      const Vec3 p = {std::cos(t) * a[0] + std::sin(t) * b[0], std::cos(t) * a[1] + std::sin(t) * b[1],
-                      std::cos(t) * a[2] + std::sin(t) * b[2]};
-      const double z = dot(p, view.v);
-      const double x = cx + radius * dot(p, view.e1), y = cy - radius * dot(p, view.e2);
-      if (z > 0) {
-        if (pen)
-          cairo_line_to(cr, x, y);
-        else
-          cairo_move_to(cr, x, y);
-        pen = true;
-        // label where the circle is most face-on, but not at the very centre
-        const double score = z * (1 - z);
-        if (score > best) {
-          best = score;
-          bx = x;
-          by = y;
-        }
-      } else {
-        pen = false;
-      }
+// A polyline of unit vectors, drawn where it faces the viewer.
+template <class Point>
+void draw_path(cairo_t* cr, const View& view, double cx, double cy, double radius, int n, Point point) {
+  bool pen = false;
+  for (int k = 0; k <= n; ++k) {
+    const Vec3 p = point(k);
+    if (view.z(p) <= 0) {
+      pen = false;
+      continue;
     }
-    cairo_stroke(cr);
-    if (best > 0) c.text(bx + 3, by - 3, r.label(), 9, 0.85, 0.9, 1.0);
+    const double x = cx + radius * view.x(p), y = cy - radius * view.y(p);
+    if (pen)
+      cairo_line_to(cr, x, y);
+    else
+      cairo_move_to(cr, x, y);
+    pen = true;
   }
+  cairo_stroke(cr);
 }
 
 }  // namespace
 
-void render_sphere_png(const std::string& path, const std::vector<std::uint64_t>& map, int nside,
-                       const RenderOptions& o) {
-  const int w = o.width, h = static_cast<int>(o.width * 0.82);
-  Canvas c(w, h);
-  const LogScale scale(map);
-  const View view(o.view_lon, o.view_lat);
-  const double radius = 0.42 * h, cx = 0.44 * w, cy = 0.52 * h;
+View::View(double lon, double lat) {
+  const double lo = lon * M_PI / 180, la = lat * M_PI / 180;
+  v = direction(lon, lat);
+  e1 = {-std::sin(lo), std::cos(lo), 0.0};
+  e2 = {-std::sin(la) * std::cos(lo), -std::sin(la) * std::sin(lo), std::cos(la)};
+}
+double View::x(const Vec3& p) const { return dot(p, e1); }
+double View::y(const Vec3& p) const { return dot(p, e2); }
+double View::z(const Vec3& p) const { return dot(p, v); }
+
+void paint_sphere(Canvas& c, const std::vector<std::uint64_t>& map, int nside, const View& view, double cx,
+                  double cy, double radius, const LogScale& scale) {
   c.paint(static_cast<int>(cx - radius - 1), static_cast<int>(cy - radius - 1), static_cast<int>(2 * radius + 3),
           static_cast<int>(2 * radius + 3),
           [&](double px, double py) {
@@ -97,7 +69,72 @@ void render_sphere_png(const std::string& path, const std::vector<std::uint64_t>
             return scale(map[vec2pix_ring(nside, d)]);
           },
           2);
-  if (o.resonance_order > 0) draw_circles(c, view, cx, cy, radius, o.resonance_order);
+}
+
+void draw_circles(Canvas& c, const View& view, double cx, double cy, double radius, int max_order) {
+  cairo_t* cr = c.cr();
+  for (const Resonance& r : resonances(max_order)) {
+    const Vec3 n = normalised({double(r.m[0]), double(r.m[1]), double(r.m[2])});
+    const Vec3 helper = std::fabs(n[2]) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
+    const Vec3 a = normalised(cross(n, helper)), b = cross(n, a);
+    auto point = [&](int k) {
+      const double t = k * M_PI / 360;
+      return Vec3{std::cos(t) * a[0] + std::sin(t) * b[0], std::cos(t) * a[1] + std::sin(t) * b[1],
+                  std::cos(t) * a[2] + std::sin(t) * b[2]};
+    };
+    if (r.order == 1)
+      cairo_set_source_rgba(cr, 1, 1, 1, 0.5);
+    else
+      cairo_set_source_rgba(cr, 0.55, 0.85, 1.0, 0.45);
+    cairo_set_line_width(cr, r.order == 1 ? 1.2 : 0.8);
+    draw_path(cr, view, cx, cy, radius, 720, point);
+    // the label goes where the circle is most face-on, away from the centre
+    double best = 0;
+    Vec3 at{};
+    for (int k = 0; k <= 720; ++k) {
+      const Vec3 p = point(k);
+      const double z = view.z(p), score = z * (1 - z);
+      if (z > 0 && score > best) {
+        best = score;
+        at = p;
+      }
+    }
+    if (best > 0) c.text(cx + radius * view.x(at) + 3, cy - radius * view.y(at) - 3, r.label(), 9, 0.85, 0.9, 1.0);
+  }
+}
+
+void draw_square(Canvas& c, const View& view, double cx, double cy, double radius, const std::array<double, 2>& centre,
+                 double width) {
+  const double lo = centre[0] * M_PI / 180, la = centre[1] * M_PI / 180, w = std::tan(0.5 * width * M_PI / 180);
+  const Vec3 cv = direction(centre[0], centre[1]);
+  const Vec3 e1 = {-std::sin(lo), std::cos(lo), 0.0};
+  const Vec3 e2 = {-std::sin(la) * std::cos(lo), -std::sin(la) * std::sin(lo), std::cos(la)};
+  const double corner[5][2] = {{-w, -w}, {w, -w}, {w, w}, {-w, w}, {-w, -w}};
+  cairo_t* cr = c.cr();
+  cairo_set_source_rgba(cr, 0.5, 1.0, 0.6, 0.95);
+  cairo_set_line_width(cr, 1.6);
+  draw_path(cr, view, cx, cy, radius, 160, [&](int k) {
+    const int side = std::min(k / 40, 3);
+    const double f = (k - 40 * side) / 40.0;
+    const double gx = corner[side][0] + f * (corner[side + 1][0] - corner[side][0]);
+    const double gy = corner[side][1] + f * (corner[side + 1][1] - corner[side][1]);
+    return normalised({cv[0] + gx * e1[0] + gy * e2[0], cv[1] + gx * e1[1] + gy * e2[1], cv[2] + gx * e1[2] + gy * e2[2]});
+  });
+}
+
+}  // namespace arnoldweb::detail
+
+namespace arnoldweb {
+
+void render_sphere_png(const std::string& path, const std::vector<std::uint64_t>& map, int nside,
+                       const RenderOptions& o) {
+  const int w = o.width, h = static_cast<int>(o.width * 0.82);
+  detail::Canvas c(w, h);
+  const detail::LogScale scale(map);
+  const detail::View view(o.view_lon, o.view_lat);
+  const double radius = 0.42 * h, cx = 0.44 * w, cy = 0.52 * h;
+  detail::paint_sphere(c, map, nside, view, cx, cy, radius, scale);
+  if (o.resonance_order > 0) detail::draw_circles(c, view, cx, cy, radius, o.resonance_order);
   c.colour_bar(0.86 * w, 0.16 * h, 0.025 * w, 0.68 * h, scale, "counts");
   c.text(0.03 * w, 0.05 * h, o.title, 15);
   char view_text[96];
@@ -109,8 +146,8 @@ void render_sphere_png(const std::string& path, const std::vector<std::uint64_t>
 void render_mollweide_png(const std::string& path, const std::vector<std::uint64_t>& map, int nside,
                           const RenderOptions& o) {
   const int w = o.width, h = static_cast<int>(o.width * 0.62);
-  Canvas c(w, h);
-  const LogScale scale(map);
+  detail::Canvas c(w, h);
+  const detail::LogScale scale(map);
   const double a = 0.45 * w, cx = 0.5 * w, cy = 0.45 * h;  // semi-axes a and a/2
   c.paint(static_cast<int>(cx - a - 1), static_cast<int>(cy - a / 2 - 1), static_cast<int>(2 * a + 3),
           static_cast<int>(a + 3),

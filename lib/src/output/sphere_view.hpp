@@ -1,0 +1,33 @@
+// arnoldweb: drawing the sphere in orthographic view, shared by the map
+// pictures and the composite figures.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "arnoldweb/sphere.hpp"
+#include "output/canvas.hpp"
+
+namespace arnoldweb::detail {
+
+// The view: v towards the viewer, e1 to the right (east), e2 up (north).
+struct View {
+  Vec3 v, e1, e2;
+  View(double lon, double lat);
+  // screen offsets (right, up) and depth (towards the viewer) of a unit vector
+  double x(const Vec3& p) const;
+  double y(const Vec3& p) const;
+  double z(const Vec3& p) const;
+};
+
+// The map on a disc of `radius` pixels about (cx, cy).
+void paint_sphere(Canvas& c, const std::vector<std::uint64_t>& map, int nside, const View& view, double cx,
+                  double cy, double radius, const LogScale& scale);
+// The circles m.P = 0 with max |m_i| <= max_order, labelled.
+void draw_circles(Canvas& c, const View& view, double cx, double cy, double radius, int max_order);
+// The outline of a gnomonic square (centre lon/lat, full width, degrees).
+void draw_square(Canvas& c, const View& view, double cx, double cy, double radius, const std::array<double, 2>& centre,
+                 double width);
+
+}  // namespace arnoldweb::detail
