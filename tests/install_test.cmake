@@ -1,0 +1,22 @@
+# ctest `install`: install the build tree into a fresh prefix, then configure,
+# build and run tests/downstream against it with find_package(arnoldweb).
+set(prefix "${BUILD_DIR}/install-test/prefix")
+set(work "${BUILD_DIR}/install-test/downstream")
+file(REMOVE_RECURSE "${BUILD_DIR}/install-test")
+execute_process(COMMAND ${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}" RESULT_VARIABLE rc OUTPUT_QUIET)
+if(rc)
+  message(FATAL_ERROR "install failed: ${rc}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/downstream" -B "${work}" -G "${GENERATOR}"
+                        "-DCMAKE_PREFIX_PATH=${prefix}" RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "configuring the downstream project failed: ${rc}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build "${work}" RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "building the downstream project failed: ${rc}")
+endif()
+execute_process(COMMAND "${work}/downstream" RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "the downstream program failed: ${rc}")
+endif()
