@@ -183,6 +183,18 @@ AW_FN void aw_ensemble_item(aw_u32 features, int stages, int kick_first, int ini
     }
   }
 
+  /* ---- time reversal: P -> -P, the same steps again, P -> -P: back at the start */
+  if (AW_HAS(AW_F_REVERSE)) {
+    s.px = -s.px;
+    s.py = -s.py;
+    s.pz = -s.pz;
+    for (aw_i64 w = 0; w < windows; ++w)
+      for (aw_i64 g = 0; g < segments; ++g) aw_segment(&s, steps, rp, stages, kick_first);
+    s.px = -s.px;
+    s.py = -s.py;
+    s.pz = -s.pz;
+  }
+
   /* ---- bookkeeping */
   real amax[AW_LANES];
   AW_STORE_LANES(emax_l, amax);

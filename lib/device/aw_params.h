@@ -19,7 +19,9 @@
 #define AW_F_ZOOM 0x40u           /* gnomonic high-resolution histogram of a region */
 #define AW_F_CONFINE 0x80u        /* only trajectories that stay in a region count */
 #define AW_F_FRAMES 0x100u        /* one velocity map per span of windows (time series) */
-#define AW_F_ALL 0x1ffu
+#define AW_F_REVERSE 0x200u       /* test of time reversibility: after the run, flip P,
+                                     integrate as long again, flip P back (final states) */
+#define AW_F_ALL 0x3ffu
 
 /* ------------------------------------------------ initial distributions
  * X is uniform on the accessible part of the torus in every case. */

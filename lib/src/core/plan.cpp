@@ -20,7 +20,7 @@ namespace {
 constexpr double kTwoPi = 6.283185307179586476925;
 // Initial positions are drawn by rejection: with accessible fraction f, each
 // trajectory tries up to 30/f positions (failure probability e^-30 ~ 1e-13).
-constexpr double kMinAccessible = 0.002;
+constexpr double kMinAccessible = 0.001;
 constexpr double kAttemptsTimesFraction = 30.0;
 constexpr std::uint64_t kMaxStateRecords = 50'000'000;
 
@@ -90,6 +90,7 @@ std::vector<std::string> feature_names(std::uint32_t f) {
   if (f & AW_F_ZOOM) n.push_back("zoom");
   if (f & AW_F_CONFINE) n.push_back("confine");
   if (f & AW_F_FRAMES) n.push_back("frames");
+  if (f & AW_F_REVERSE) n.push_back("time_reversal");
   return n;
 }
 
