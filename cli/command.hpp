@@ -34,6 +34,7 @@ void add_check_command(CLI::App& app, Action& action);
 void add_run_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
 void add_keys_command(CLI::App& app, Action& action);
+void add_render_command(CLI::App& app, Action& action);
 void add_accuracy_command(CLI::App& app, Action& action);
 
 }  // namespace arnoldweb::cli

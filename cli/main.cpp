@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   add_run_command(app, action);
   add_bench_command(app, action);
   add_keys_command(app, action);
+  add_render_command(app, action);
   add_accuracy_command(app, action);
 
   try {

@@ -136,6 +136,20 @@ TEST_SUITE("output") {
   }
 #endif
 
+#ifdef ARNOLDWEB_HAVE_CAIRO
+  TEST_CASE("render_saved draws the pictures of a saved run from summary.json and map.h5") {
+    const Plan p = small_plan();
+    const std::string dir = awtest::temp_dir("saved") + "/out";
+    write_outputs(p, small_result(), dir, false);
+    for (const char* name : {"map.png", "zoom.png"}) fs::remove(dir + "/" + name);
+    const auto files = render_saved(dir);
+    CHECK(fs::exists(dir + "/map.png"));
+    CHECK(fs::exists(dir + "/zoom.png"));
+    CHECK(files.size() >= 4);
+    CHECK_THROWS_AS(render_saved(dir + "/nothing-here"), OutputError);
+  }
+#endif
+
   TEST_CASE("an existing output directory is refused without force and replaced with it") {
     const Plan p = small_plan();
     const std::string dir = awtest::temp_dir("exists") + "/out";

@@ -62,4 +62,9 @@ void render_figure_png(const std::string& path, const Plan& plan, const Result& 
 std::string write_figure(const std::string& dir, const Plan& plan, const Result& result,
                          const std::vector<FigurePanel>& panels);
 
+// Draws the pictures of an output directory written earlier (from its
+// summary.json and map.h5; e.g. a GPU node's run, on a machine with cairo),
+// its panels' and figure.png. Returns the paths written.
+std::vector<std::string> render_saved(const std::string& dir);
+
 }  // namespace arnoldweb

@@ -1,0 +1,100 @@
+// arnoldweb: pictures of a saved run: the scene and counts come back from
+// summary.json, the maps from map.h5.
+#include <hdf5.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "arnoldweb/errors.hpp"
+#include "arnoldweb/output.hpp"
+#include "output/pictures.hpp"
+
+namespace arnoldweb {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::uint64_t> read_counts(hid_t file, const char* name, const std::string& path) {
+  std::vector<std::uint64_t> v;
+  if (H5Lexists(file, name, H5P_DEFAULT) <= 0) return v;
+  const hid_t d = H5Dopen2(file, name, H5P_DEFAULT);
+  const hid_t space = H5Dget_space(d);
+  v.resize(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+  const herr_t rc = H5Dread(d, H5T_NATIVE_UINT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+  H5Sclose(space);
+  H5Dclose(d);
+  if (rc < 0) throw OutputError(path, std::string("cannot read ") + name);
+  return v;
+}
+
+struct Saved {
+  Plan plan;
+  Result result;
+};
+
+Saved load(const std::string& dir) {
+  const std::string summary_path = dir + "/summary.json";
+  std::ifstream in(summary_path);
+  if (!in) throw OutputError(summary_path, "cannot read it (is this an arnoldweb output directory?)");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const std::exception& e) {
+    throw OutputError(summary_path, std::string("not valid JSON: ") + e.what());
+  }
+  Saved s;
+  s.plan = make_plan(parse_scene(j.at("scene_toml").get<std::string>(), summary_path));
+  Result& r = s.result;
+  r.trajectories = j.at("trajectories").get<std::uint64_t>();
+  r.completed = j.at("completed").get<std::uint64_t>();
+  r.binned = j.at("binned").get<std::uint64_t>();
+  r.device.id = j.at("device").at("id").get<std::string>();
+  r.device.name = j.at("device").at("name").get<std::string>();
+  const std::string h5 = dir + "/map.h5";
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const hid_t f = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (f < 0) throw OutputError(h5, "cannot open it");
+  r.map = read_counts(f, "map", h5);
+  const auto frames = read_counts(f, "frames", h5);
+  r.zoom = read_counts(f, "zoom", h5);
+  H5Fclose(f);
+  const std::size_t npix = r.map.size();
+  for (std::size_t k = 0; npix && k * npix < frames.size(); ++k)
+    r.frames.emplace_back(frames.begin() + static_cast<std::ptrdiff_t>(k * npix),
+                          frames.begin() + static_cast<std::ptrdiff_t>((k + 1) * npix));
+  return s;
+}
+
+}  // namespace
+
+std::vector<std::string> render_saved(const std::string& dir) {
+  if (!detail::pictures_available())
+    throw OutputError(dir, "this build has no pictures (cairo was not found when it was configured)");
+  std::vector<std::string> written;
+  const Saved main = load(dir);
+  for (const auto& n : detail::write_pictures(main.plan, main.result, dir)) written.push_back(dir + "/" + n);
+  std::vector<Saved> panels;
+  std::vector<FigurePanel> figure_panels;
+  for (const auto& p : main.plan.scene.panels) {
+    const std::string pdir = dir + "/panel-" + p.name;
+    if (!fs::exists(pdir + "/summary.json")) continue;
+    panels.push_back(load(pdir));
+    for (const auto& n : detail::write_pictures(panels.back().plan, panels.back().result, pdir))
+      written.push_back(pdir + "/" + n);
+  }
+  for (std::size_t k = 0, i = 0; k < main.plan.scene.panels.size() && i < panels.size(); ++k)
+    if (fs::exists(dir + "/panel-" + main.plan.scene.panels[k].name + "/summary.json")) {
+      figure_panels.push_back({main.plan.scene.panels[k].name, main.plan.scene.panels[k].title, &panels[i].plan,
+                               &panels[i].result});
+      ++i;
+    }
+  if (!figure_panels.empty()) {
+    const std::string fig = write_figure(dir, main.plan, main.result, figure_panels);
+    if (!fig.empty()) written.push_back(fig);
+  }
+  return written;
+}
+
+}  // namespace arnoldweb
