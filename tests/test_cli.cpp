@@ -135,6 +135,24 @@ TEST_SUITE("cli") {
     CHECK_FALSE(fs::exists(empty + "/out"));
   }
 
+  TEST_CASE("asking for a CUDA device where there is none fails cleanly (exit 4, the reason, no output)") {
+    bool have_cuda = false;
+    for (const auto& d : arnoldweb::list_devices()) have_cuda |= d.backend == "cuda";
+    if (have_cuda) {
+      MESSAGE("this machine has a CUDA device; the failure path is not reachable here");
+      return;
+    }
+    const std::string dir = awtest::temp_dir("cli");
+    std::ofstream(dir + "/scene.toml") << kGood;
+    std::string out;
+    CHECK(awtest::run_cli("run " + dir + "/scene.toml --quiet --device cuda:0 --out " + dir + "/out", &out) == 4);
+    CAPTURE(out);
+    CHECK(contains(out, "cuda:0"));
+    CHECK(contains(out, "no such device"));
+    CHECK((contains(out, "cuda: no CUDA") || contains(out, "no CUDA backend") || contains(out, "driver too old")));
+    CHECK_FALSE(fs::exists(dir + "/out"));
+  }
+
   TEST_CASE("double precision on a device without fp64 is refused with a way out") {
     arnoldweb::Scene s;
     s.file = "<fp64>";
