@@ -25,8 +25,9 @@ mkdir -p figs
 echo "figure,device,trajectories,wall_seconds,trajectory_steps_per_second,energy_error_max,binned,map_digest" > "$OUT/figures.csv"
 for fig in fig3_e15 fig2_e400 fig4_diffusion; do
   stamp "$fig on $device"
-  /usr/bin/time -f "%e s wall" build-gpu/arnoldweb run "scenes/$fig.toml" --device "$device" --out "figs/$fig" --force --quiet \
-    || echo "$fig FAILED"
+  start=$SECONDS
+  build-gpu/arnoldweb run "scenes/$fig.toml" --device "$device" --out "figs/$fig" --force --quiet || echo "$fig FAILED"
+  echo "$fig: $((SECONDS - start)) s end to end"
   for s in "figs/$fig/summary.json" figs/"$fig"/panel-*/summary.json; do
     [ -f "$s" ] && python3 - "$s" "$fig" >> "$OUT/figures.csv" <<'PY'
 import json, sys
@@ -40,4 +41,4 @@ PY
   ls -la "$OUT/$fig.tgz"
 done
 stamp "done"
-column -t -s, "$OUT/figures.csv" 2>/dev/null || cat "$OUT/figures.csv"
+cat "$OUT/figures.csv"
