@@ -68,10 +68,10 @@ AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) {
 #else
 
 AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) {
-  lreal x4 = AW_R(4.0) * u;            /* exact */
-  lreal t = x4 + AW_ROUND_MAGIC;       /* k = t - magic: nearest integer, ties to even */
+  /* 4u is exact, so fma(4, u, .) rounds the same sums as 4u + . would */
+  lreal t = AW_FMA(AW_LSPLAT(AW_R(4.0)), u, AW_LSPLAT(AW_ROUND_MAGIC)); /* k = t - magic: rint(4u) */
   lreal k = t - AW_ROUND_MAGIC;
-  lreal f = x4 - k;                    /* exact, in [-1/2, 1/2] */
+  lreal f = AW_FMA(AW_LSPLAT(AW_R(4.0)), u, -k); /* 4u - k: exact, in [-1/2, 1/2] */
   lreal r = AW_FMA(f, AW_LSPLAT(AW_PIO2_HI), f * AW_PIO2_LO); /* f * pi/2, one rounding */
   lreal z = r * r;
 #ifdef AW_FLOAT
