@@ -17,7 +17,11 @@
 #define AW_CUDA_MAX_BLOCK 128
 #endif
 #ifndef AW_CUDA_MIN_BLOCKS
-#define AW_CUDA_MIN_BLOCKS 8
+#ifdef AW_FLOAT
+#define AW_CUDA_MIN_BLOCKS 8 /* H200 sweep 4/6/8: 4.07/3.99/4.17e10 and 3.99/3.95/4.12e10 */
+#else
+#define AW_CUDA_MIN_BLOCKS 4 /* H200 sweep 4/6/8: 1.915/1.889/1.911e10 and 1.944/1.896/1.901e10 */
+#endif
 #endif
 extern "C" __global__ void __launch_bounds__(AW_CUDA_MAX_BLOCK, AW_CUDA_MIN_BLOCKS) aw_ensemble(aw_u64 chunk_first, aw_u64 chunk_end, const real* rp,
                                        const aw_i64* ip, aw_u32* map, aw_u32* counters,
