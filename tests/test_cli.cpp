@@ -153,6 +153,29 @@ TEST_SUITE("cli") {
     CHECK_FALSE(fs::exists(dir + "/out"));
   }
 
+  TEST_CASE("an OpenCL build that fails reports the full build log and the options") {
+    bool have_opencl = false;
+    for (const auto& d : arnoldweb::list_devices()) have_opencl |= d.backend == "opencl";
+    if (!have_opencl) {
+      MESSAGE("no OpenCL device here");
+      return;
+    }
+    const std::string dir = awtest::temp_dir("cli");
+    std::ofstream(dir + "/scene.toml") << kGood;
+    const std::string cmd = "ARNOLDWEB_OPENCL_OPTIONS='-DAW_STAGES=oops' " + std::string(ARNOLDWEB_CLI) + " run " + dir +
+                            "/scene.toml --quiet --device opencl:0 --out " + dir + "/out > " + dir + "/log.txt 2>&1";
+    const int rc = std::system(cmd.c_str());
+    CHECK(WEXITSTATUS(rc) == 4);
+    std::ifstream f(dir + "/log.txt");
+    const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    CAPTURE(text);
+    CHECK(contains(text, "kernel build failed"));
+    CHECK(contains(text, "options: -DAW_FEATURES="));
+    CHECK(contains(text, "build log:"));
+    CHECK(contains(text, "oops"));
+    CHECK_FALSE(fs::exists(dir + "/out"));
+  }
+
   TEST_CASE("double precision on a device without fp64 is refused with a way out") {
     arnoldweb::Scene s;
     s.file = "<fp64>";

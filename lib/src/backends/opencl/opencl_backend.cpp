@@ -90,6 +90,8 @@ class OpenclBackend final : public Backend {
     if (float_ && (device_.get_info<cl_device_fp_config>(CL_DEVICE_SINGLE_FP_CONFIG) &
                    CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT))
       options_ += " -cl-fp32-correctly-rounded-divide-sqrt";
+    // extra compiler options, for experiments and diagnostics (like ARNOLDWEB_NVRTC_OPTIONS)
+    if (const char* extra = std::getenv("ARNOLDWEB_OPENCL_OPTIONS")) options_ += std::string(" ") + extra;
     build();
     const std::size_t rs = float_ ? sizeof(float) : sizeof(double);
     try {
