@@ -6,6 +6,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
 
 namespace awtest {
 
@@ -58,6 +61,42 @@ int run_cli(const std::string& args, std::string* out) {
   const int status = pclose(pipe);
   if (out) *out = text;
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+bool long_tests_enabled() {
+  const char* v = std::getenv("ARNOLDWEB_LONG_TESTS");
+  return v != nullptr && std::string(v) == "1";
+}
+
+namespace {
+
+// Whether this process was started for the long suite by name (the command
+// line, from /proc: the doctest context keeps its filters to itself).
+bool long_suite_selected() {
+  std::ifstream in("/proc/self/cmdline", std::ios::binary);
+  const std::string cmdline((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::size_t start = 0;
+  while (start < cmdline.size()) {
+    std::size_t end = cmdline.find('\0', start);
+    if (end == std::string::npos) end = cmdline.size();
+    const std::string arg = cmdline.substr(start, end - start);
+    for (const char* opt : {"-ts=", "--test-suite=", "-test-suite="})
+      if (arg.rfind(opt, 0) == 0 && arg.find("hard-long") != std::string::npos) return true;
+    start = end + 1;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool require_long_tests(const std::string& what) {
+  if (long_tests_enabled()) return true;
+  std::cout << "SKIPPED: " << what
+            << " is a long test (suite hard-long, ctest hard.long); set ARNOLDWEB_LONG_TESTS=1 to run it "
+               "(bench/gpu/run.sh does)"
+            << std::endl;
+  if (long_suite_selected()) std::exit(77);
+  return false;
 }
 
 }  // namespace awtest

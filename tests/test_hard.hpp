@@ -1,0 +1,234 @@
+// arnoldweb tests, suite "hard": what the hard-case test files share.
+//
+// - The model in long double, in radians, never wrapped: an independent
+//   implementation (libm's sinl/cosl, no turns, no winding counts) of the
+//   same Hamiltonian H = |P|^2/2 + 2 cos x cos y cos^2 z.
+// - A splitting step in long double that runs a method's coefficient table
+//   exactly as the plan hands it to the kernels (the same double-rounded
+//   drift and kick coefficients), so that the only differences from the core
+//   are rounding and the wrapping.
+// - Hand-made states of the core (core_d, tests/core_double.hpp) and their
+//   unwrapped positions.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "arnoldweb/plan.hpp"
+#include "arnoldweb/scene.hpp"
+#include "aw_params.h"
+#include "core_double.hpp"
+
+namespace hard {
+
+constexpr long double kTwoPiL = 6.283185307179586476925286766559005768L;
+
+// Phase-space point in radians (unwrapped) and momentum.
+struct LdState {
+  long double x[3];
+  long double p[3];
+};
+
+// F = -grad V in long double.
+inline void ld_force(const long double* x, long double* f) {
+  long double sx, cx, sy, cy, sz, cz;
+  sincosl(x[0], &sx, &cx);
+  sincosl(x[1], &sy, &cy);
+  sincosl(x[2], &sz, &cz);
+  f[0] = 2 * sx * cy * cz * cz;
+  f[1] = 2 * cx * sy * cz * cz;
+  f[2] = 4 * cx * cy * sz * cz;
+}
+
+inline long double ld_potential(const long double* x) {
+  const long double cz = cosl(x[2]);
+  return 2 * cosl(x[0]) * cosl(x[1]) * cz * cz;
+}
+
+inline long double ld_energy(const LdState& s) {
+  return (s.p[0] * s.p[0] + s.p[1] * s.p[1] + s.p[2] * s.p[2]) / 2 + ld_potential(s.x);
+}
+
+// A plan's method and step, in long double radians, without wrapping: drift
+// x += (2 pi rp[AW_P_DRIFT + i]) p, kick p += rp[AW_P_KICK + i] F. Kicks at
+// step boundaries are not merged (the same map up to one rounding).
+class LdSplitting {
+ public:
+  explicit LdSplitting(const arnoldweb::Plan& plan) : kick_first_(plan.method.kick_first) {
+    const int s = plan.method.stages;
+    const int drifts = kick_first_ ? s : s + 1;
+    for (int i = 0; i < drifts; ++i) drift_.push_back(kTwoPiL * plan.rp[AW_P_DRIFT + i]);
+    for (int i = 0; i <= s; ++i) kick_.push_back(plan.rp[AW_P_KICK + i]);
+  }
+
+  void step(LdState& s) const {
+    if (kick_first_) {
+      kick(s, kick_[0]);
+      for (std::size_t i = 0; i < drift_.size(); ++i) {
+        drift(s, drift_[i]);
+        kick(s, kick_[i + 1]);
+      }
+    } else {
+      for (std::size_t i = 0; i + 1 < drift_.size(); ++i) {
+        drift(s, drift_[i]);
+        kick(s, kick_[i + 1]);
+      }
+      drift(s, drift_.back());
+    }
+  }
+
+ private:
+  static void drift(LdState& s, long double d) {
+    for (int c = 0; c < 3; ++c) s.x[c] += d * s.p[c];
+  }
+  static void kick(LdState& s, long double k) {
+    long double f[3];
+    ld_force(s.x, f);
+    for (int c = 0; c < 3; ++c) s.p[c] += k * f[c];
+  }
+  bool kick_first_;
+  std::vector<long double> drift_, kick_;
+};
+
+// A state of the core from wrapped turns and momentum (force computed).
+inline core_d::aw_lstate core_state(const double u[3], const double p[3]) {
+  core_d::aw_lstate s{};
+  s.ux = u[0];
+  s.uy = u[1];
+  s.uz = u[2];
+  s.px = p[0];
+  s.py = p[1];
+  s.pz = p[2];
+  core_d::aw_force(&s);
+  return s;
+}
+
+// A state on the shell of energy E at position u (turns) with momentum along
+// direction d (any length).
+inline core_d::aw_lstate shell_state(double energy, const double u[3], const double d[3]) {
+  const double v = core_d::aw_potential(u[0], u[1], u[2]);
+  const double pm = std::sqrt(2 * (energy - v));
+  const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  const double p[3] = {pm * d[0] / n, pm * d[1] / n, pm * d[2] / n};
+  return core_state(u, p);
+}
+
+// The same point for the long-double model: x = 2 pi u.
+inline LdState to_ld(const core_d::aw_lstate& s) {
+  LdState l;
+  const double u[3] = {s.ux, s.uy, s.uz};
+  const std::int64_t w[3] = {s.wx, s.wy, s.wz};
+  const double p[3] = {s.px, s.py, s.pz};
+  for (int c = 0; c < 3; ++c) {
+    l.x[c] = kTwoPiL * (static_cast<long double>(w[c]) + u[c]);
+    l.p[c] = p[c];
+  }
+  return l;
+}
+
+// Unwrapped position of the core in radians: X = 2 pi (w + u), in long double
+// (w + u rounds to 2^-63 |w|: 7e-15 turns at |w| = 5e4).
+inline long double unwrapped(const core_d::aw_lstate& s, int c) {
+  const double u = c == 0 ? s.ux : c == 1 ? s.uy : s.uz;
+  const std::int64_t w = c == 0 ? s.wx : c == 1 ? s.wy : s.wz;
+  return kTwoPiL * (static_cast<long double>(w) + u);
+}
+
+// Phase-space distance |dX| + |dP| (Euclidean in each) between the core and a
+// long-double state.
+inline double distance(const core_d::aw_lstate& s, const LdState& l) {
+  long double dx2 = 0, dp2 = 0;
+  const double p[3] = {s.px, s.py, s.pz};
+  for (int c = 0; c < 3; ++c) {
+    const long double dx = unwrapped(s, c) - l.x[c];
+    const long double dp = p[c] - l.p[c];
+    dx2 += dx * dx;
+    dp2 += dp * dp;
+  }
+  return static_cast<double>(sqrtl(dx2) + sqrtl(dp2));
+}
+
+// ------------------------------------------------------------ hard orbits
+// A fixed set of orbits, each one trajectory of a scene's own ensemble (seed
+// 2026, the trajectory `index`), so that the same orbit can be run through
+// the core here and through every backend. Their character was measured from
+// the growth of a 1e-12 perturbation (docs/numerics.md) and is checked again
+// by the tests that rely on it.
+struct Orbit {
+  const char* name;
+  double energy;
+  double step;        // in T: the paper's 0.01 T, or a safe step at E = 400
+  bool at_w;          // Gaussian momenta about W = (sqrt E, sqrt E, 0), sigma 0.01 (Figure 4)
+  std::uint64_t index;
+};
+
+inline const Orbit kRegular15{"regular, E = 15", 15.0, 0.01, false, 35};
+inline const Orbit kChaotic15{"chaotic, E = 15 (at W)", 15.0, 0.01, true, 0};
+inline const Orbit kWell{"near the well bottom, E = -1.9", -1.9, 0.01, false, 0};
+inline const Orbit kRegular400{"regular, E = 400", 400.0, 0.0025, false, 0};
+inline const Orbit kChaotic400{"chaotic, E = 400", 400.0, 0.0025, false, 13};
+inline const Orbit kSaddle{"saddle level, E = 0", 0.0, 0.01, false, 0};
+inline const Orbit kTop{"maximum level, E = 2", 2.0, 0.01, false, 0};
+
+// The orbit's ensemble, run for `duration` T as one window with |dE| sampled
+// every `every` T, initial and final states recorded.
+inline arnoldweb::Scene orbit_scene(const Orbit& o, double duration, double every = 1.0) {
+  arnoldweb::Scene s;
+  s.file = "<hard orbit>";
+  s.energy = o.energy;
+  s.seed = 2026;
+  s.trajectories = o.index + 1;
+  if (o.at_w) {
+    s.initial = "gaussian";
+    s.gaussian_mean = {std::sqrt(o.energy), std::sqrt(o.energy)};
+    s.gaussian_sigma = {0.01, 0.01};
+  }
+  s.step = o.step;
+  s.average = duration;
+  s.duration = duration;
+  s.energy_every = every;
+  s.velocity_map = false;
+  s.initial_states = true;
+  s.final_states = true;
+  return s;
+}
+
+// The orbit's initial state as the kernels draw it (force computed).
+inline core_d::aw_lstate orbit_start(const arnoldweb::Plan& plan, std::uint64_t index) {
+  core_d::aw_lstate s;
+  core_d::aw_initial_state(&s, plan.kernel.initial, index, plan.rp.data(), plan.ip.data());
+  core_d::aw_force(&s);
+  return s;
+}
+
+// Steps of the plan per T.
+inline std::int64_t steps_per_t(const arnoldweb::Plan& plan) {
+  return static_cast<std::int64_t>(std::llround(1.0 / plan.step));
+}
+
+// Advance the core by `n` segments of `steps` steps (the kernels' own
+// segmentation when `steps` is the plan's steps_per_segment).
+inline void advance(core_d::aw_lstate* s, const arnoldweb::Plan& plan, std::int64_t n, std::int64_t steps) {
+  for (std::int64_t k = 0; k < n; ++k)
+    core_d::aw_segment(s, steps, plan.rp.data(), plan.method.stages, plan.method.kick_first);
+}
+
+// Growth factor of a perturbation of 1e-12 in p_x after t T, in the core (the
+// phase-space distance of the twin over 1e-12): ~linear in t on a regular
+// orbit, ~exp(lambda t) on a chaotic one until it saturates at O(1) / 1e-12.
+inline std::vector<double> twin_growth(const arnoldweb::Plan& plan, const core_d::aw_lstate& start, int t_max) {
+  core_d::aw_lstate a = start, b = start;
+  b.px += 1e-12;
+  core_d::aw_force(&b);
+  const double d0 = distance(a, to_ld(b));
+  std::vector<double> g(static_cast<std::size_t>(t_max) + 1, 1.0);
+  for (int t = 1; t <= t_max; ++t) {
+    advance(&a, plan, 1, steps_per_t(plan));
+    advance(&b, plan, 1, steps_per_t(plan));
+    g[static_cast<std::size_t>(t)] = distance(a, to_ld(b)) / d0;
+  }
+  return g;
+}
+
+}  // namespace hard
