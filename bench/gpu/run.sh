@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # The whole GPU-machine job in one call (device tool), from the repository root:
-#   bash bench/gpu/run.sh [quick|full|bench]
+#   bash bench/gpu/run.sh [quick|full|verify|bench]
+# verify: build, the whole test suite (long hard cases included), the
+# four-backend parity at full size and the native-math drift; no benchmark.
 # bench: only the build and the benchmark section (issue 7, docs/performance.md):
 # arnoldweb_bench on every GPU at N up to 8.4e6 x 2000 steps with the naive
 # CUDA baseline, GPU memory of a 1e9 map run, ncu FP64-pipe metrics of our
@@ -43,6 +45,7 @@ build-gpu/arnoldweb devices | tee "$OUT/devices.txt"
 ctest_rc=-; parity_rc=-
 if [ "$mode" != bench ]; then
 stamp "tests"
+export ARNOLDWEB_LONG_TESTS=1   # the long hard cases run here, not in CI
 ctest --test-dir build-gpu --output-on-failure -j4 --timeout 900 >"$OUT/ctest.txt" 2>&1
 ctest_rc=$?
 grep -E "Test +#|tests passed|tests failed" "$OUT/ctest.txt"
@@ -56,6 +59,7 @@ stamp "native-math drift"
 build-gpu/arnoldweb_parity --trajectories 20000 --steps $s --native >"$OUT/parity_native.md" 2>&1
 grep native "$OUT/parity_native.md"
 
+if [ "$mode" != verify ]; then
 stamp "throughput (default scene, E = 15, yoshida6a)"
 echo "device,precision,trajectories,seconds,trajectory_steps_per_s" >"$OUT/throughput.csv"
 for id in $(build-gpu/arnoldweb devices --json | python3 -c 'import json,sys; print(" ".join(d["id"] for d in json.load(sys.stdin)))'); do
@@ -72,9 +76,11 @@ print(f"{sys.argv[1]},{sys.argv[2]},{sys.argv[3]},{s['wall_seconds']:.3f},{s['tr
 PY
   done
 done
-column -t -s, "$OUT/throughput.csv"
+cat "$OUT/throughput.csv"
+fi
 
 fi
+if [ "$mode" != verify ]; then
 
 # ---------------------------------------------------------------- benchmark (issue 7)
 # Every step has its own time limit so that the whole call stays well inside
@@ -210,6 +216,7 @@ GPUNAME="$(nvidia-smi --query-gpu=name,driver_version --format=csv,noheader 2>/d
   /usr/bin/python3 bench/throughput/plot_bench.py "$OUT/bench.csv" "$OUT/bench_throughput.png" "$GPUNAME"; } || true
 cp "$BW"/*.log "$BW"/ncu*.csv "$BW"/ncu.err "$OUT/" 2>/dev/null
 for d in "$BW"/*/; do n=$(basename "$d"); for f in "$d"*.csv "$d"*.json; do [ -f "$f" ] && cp "$f" "$OUT/${n}_$(basename "$f")"; done; done
+fi  # not verify
 
 stamp "summary"
 echo "ctest rc=$ctest_rc  parity rc=$parity_rc"
