@@ -21,123 +21,45 @@
 #include "test_hard.hpp"
 
 using namespace arnoldweb;
+using namespace hard;
 
-namespace hard {
+namespace {
 
-// ------------------------------------------------------------------ drift
-// The energy error dE(t) = E(t) - E(0) of one orbit sampled every `every`
-// steps for `steps` steps, and a straight line fitted to it.
-struct DriftStats {
-  double duration = 0;     // in T
-  double max_abs = 0;      // max |dE| over the run (the error's amplitude)
-  double slope_total = 0;  // least-squares slope of dE against t, times the duration
-  double z = 0;            // that slope over its standard error from block means
-  double first_max = 0;    // max |dE| in the first and the last of `blocks` blocks
-  double last_max = 0;
+// The contrast for the test of turns: the same method and step in plain
+// double radians, never wrapped, with libm's sin and cos (what a direct
+// implementation of the paper's method does). The position grows without
+// bound, and every drift and every sin/cos argument rounds at ulp(x).
+class DoubleRadians {
+ public:
+  DoubleRadians(const Plan& plan, const LdState& start) {
+    for (int i = 0; i < plan.method.stages; ++i) drift_.push_back(static_cast<double>(kTwoPiL * plan.rp[AW_P_DRIFT + i]));
+    for (int i = 0; i <= plan.method.stages; ++i) kick_.push_back(plan.rp[AW_P_KICK + i]);
+    for (int c = 0; c < 3; ++c) {
+      x[c] = static_cast<double>(start.x[c]);
+      p[c] = static_cast<double>(start.p[c]);
+    }
+  }
+  void step() {  // kick-first methods only
+    kick(kick_[0]);
+    for (std::size_t i = 0; i < drift_.size(); ++i) {
+      for (int c = 0; c < 3; ++c) x[c] += drift_[i] * p[c];
+      kick(kick_[i + 1]);
+    }
+  }
+  double x[3], p[3];
+
+ private:
+  void kick(double k) {
+    const double sx = std::sin(x[0]), cx = std::cos(x[0]), sy = std::sin(x[1]), cy = std::cos(x[1]);
+    const double sz = std::sin(x[2]), cz = std::cos(x[2]);
+    p[0] += k * (2 * sx * cy * cz * cz);
+    p[1] += k * (2 * cx * sy * cz * cz);
+    p[2] += k * (4 * cx * cy * sz * cz);
+  }
+  std::vector<double> drift_, kick_;
 };
 
-inline DriftStats energy_drift(const Orbit& o, std::int64_t steps, std::int64_t every, int blocks = 20) {
-  const Plan plan = make_plan(orbit_scene(o, 1.0));
-  core_d::aw_lstate s = orbit_start(plan, o.index);
-  const double e0 = core_d::aw_energy(&s);
-  const std::int64_t samples = steps / every, per_block = samples / blocks;
-  std::vector<double> block_mean(static_cast<std::size_t>(blocks), 0.0), block_max(static_cast<std::size_t>(blocks), 0.0);
-  // running sums for the least-squares line through all samples (t in units of samples)
-  long double st = 0, sd = 0, stt = 0, std_ = 0;
-  DriftStats r;
-  for (std::int64_t i = 0; i < samples; ++i) {
-    core_d::aw_segment(&s, every, plan.rp.data(), plan.method.stages, plan.method.kick_first);
-    const double de = core_d::aw_energy(&s) - e0;
-    const long double t = static_cast<long double>(i + 1);
-    st += t;
-    sd += de;
-    stt += t * t;
-    std_ += t * de;
-    r.max_abs = std::max(r.max_abs, std::fabs(de));
-    const std::size_t b = static_cast<std::size_t>(std::min<std::int64_t>(i / per_block, blocks - 1));
-    block_mean[b] += de / static_cast<double>(per_block);
-    block_max[b] = std::max(block_max[b], std::fabs(de));
-  }
-  const long double n = static_cast<long double>(samples);
-  const long double slope = (n * std_ - st * sd) / (n * stt - st * st);  // per sample
-  r.slope_total = static_cast<double>(slope * n);
-  // the same slope from the block means, with its standard error (the block
-  // means are nearly independent where single samples are not)
-  double mb = 0, mx = 0;
-  for (int b = 0; b < blocks; ++b) {
-    mb += block_mean[static_cast<std::size_t>(b)] / blocks;
-    mx += (b + 0.5) / blocks;
-  }
-  double sxy = 0, sxx = 0;
-  for (int b = 0; b < blocks; ++b) {
-    sxy += (b + 0.5 - mx) * (block_mean[static_cast<std::size_t>(b)] - mb);
-    sxx += (b + 0.5 - mx) * (b + 0.5 - mx);
-  }
-  const double bslope = sxy / sxx;
-  double res = 0;
-  for (int b = 0; b < blocks; ++b) {
-    const double e = block_mean[static_cast<std::size_t>(b)] - mb - bslope * (b + 0.5 - mx);
-    res += e * e;
-  }
-  const double se = std::sqrt(res / (blocks - 2) / sxx);
-  r.z = se > 0 ? bslope / se : 0;
-  r.first_max = block_max.front();
-  r.last_max = block_max.back();
-  r.duration = static_cast<double>(steps) * plan.step;
-  return r;
-}
-
-// ------------------------------------------------------------ reversal
-// Phase-space distance of every trajectory's final state from its initial
-// state (positions in radians from winding counts and wrapped turns).
-inline std::vector<double> return_errors(const Result& r) {
-  std::vector<double> err;
-  for (std::size_t i = 0; i < r.trajectories; ++i) {
-    double dx2 = 0, dp2 = 0;
-    for (int c = 0; c < 3; ++c) {
-      const double turns = static_cast<double>(r.final_i[i * AW_STATE_INTS + c]) +
-                           (r.final_r[i * AW_STATE_REALS + c] - r.initial_r[i * AW_STATE_REALS + c]);
-      const double dx = 2 * M_PI * turns;
-      const double dp = r.final_r[i * AW_STATE_REALS + 3 + c] - r.initial_r[i * AW_STATE_REALS + 3 + c];
-      dx2 += dx * dx;
-      dp2 += dp * dp;
-    }
-    err.push_back(std::sqrt(dx2) + std::sqrt(dp2));
-  }
-  return err;
-}
-
-inline double quantile(std::vector<double> v, double q) {
-  std::sort(v.begin(), v.end());
-  const std::size_t i = std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())));
-  return v[i];
-}
-
-template <class T>
-long first_difference(const std::vector<T>& a, const std::vector<T>& b) {
-  if (a.size() != b.size()) return 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (std::memcmp(&a[i], &b[i], sizeof(T)) != 0) return static_cast<long>(i);
-  return -1;
-}
-
-// Forward t T, P -> -P, t T again, P -> -P, in the core; the distance from the start.
-inline double core_return_error(const Plan& plan, const core_d::aw_lstate& start, int t) {
-  core_d::aw_lstate s = start;
-  advance(&s, plan, t, steps_per_t(plan));
-  s.px = -s.px;
-  s.py = -s.py;
-  s.pz = -s.pz;
-  advance(&s, plan, t, steps_per_t(plan));
-  s.px = -s.px;
-  s.py = -s.py;
-  s.pz = -s.pz;
-  return distance(s, to_ld(start));
-}
-
-}  // namespace hard
-
-using namespace hard;
+}  // namespace
 
 TEST_SUITE("hard") {
   // ------------------------------------------------------------------ 1a
@@ -146,11 +68,12 @@ TEST_SUITE("hard") {
     // the same method and step in long double radians without any wrapping
     // (LdSplitting: libm's sinl/cosl), over 5e5 steps of two regular orbits.
     // Wrapping is exact, so the two differ only by rounding: the measured
-    // difference (docs/numerics.md) is ~1e-13 of the displacement, where one
-    // turn lost or gained would be 1e-5 and a wrapped angle kept in float 1e-8.
+    // difference (docs/numerics.md) is ~5e-14 of the displacement, where one
+    // turn lost or gained in ~5e4 would be 2e-5. The same method in plain
+    // double radians (DoubleRadians) is ~1000x further off.
     const Orbit orbits[2] = {kRegular15, kRegular400};
     const std::int64_t kSteps = 500000, kSample = 50000;
-    double max_dx[2] = {0, 0}, rel_dv[2] = {0, 0}, turns[2] = {0, 0};
+    double max_dx[2] = {0, 0}, rel_dv[2] = {0, 0}, turns[2] = {0, 0}, radians_dx[2] = {0, 0};
     bool wrapped[2] = {true, true};
 #pragma omp parallel for num_threads(2) schedule(static, 1)
     for (int k = 0; k < 2; ++k) {
@@ -160,11 +83,17 @@ TEST_SUITE("hard") {
       const LdState l0 = l;
       const core_d::aw_lstate s0 = s;
       const LdSplitting ld(plan);
+      DoubleRadians naive(plan, l);
       for (std::int64_t done = 0; done < kSteps; done += kSample) {
         core_d::aw_segment(&s, kSample, plan.rp.data(), plan.method.stages, plan.method.kick_first);
-        for (std::int64_t n = 0; n < kSample; ++n) ld.step(l);
-        for (int c = 0; c < 3; ++c)
+        for (std::int64_t n = 0; n < kSample; ++n) {
+          ld.step(l);
+          naive.step();
+        }
+        for (int c = 0; c < 3; ++c) {
           max_dx[k] = std::max(max_dx[k], static_cast<double>(fabsl(unwrapped(s, c) - l.x[c])));
+          radians_dx[k] = std::max(radians_dx[k], static_cast<double>(fabsl(naive.x[c] - l.x[c])));
+        }
         wrapped[k] = wrapped[k] && std::fabs(s.ux) <= 0.5 && std::fabs(s.uy) <= 0.5 && std::fabs(s.uz) <= 0.5;
       }
       // averaged velocity over the whole run: V = (X(t) - X(0)) / t
@@ -182,12 +111,13 @@ TEST_SUITE("hard") {
     for (int k = 0; k < 2; ++k) {
       CAPTURE(orbits[k].name);
       std::printf("wrapped vs unwrapped long double, %s, 5e5 steps (%.0f turns): max |dX| %.2e rad, "
-                  "|dV|/|V| %.2e\n",
-                  orbits[k].name, turns[k], max_dx[k], rel_dv[k]);
+                  "|dV|/|V| %.2e; plain double radians: max |dX| %.2e rad\n",
+                  orbits[k].name, turns[k], max_dx[k], rel_dv[k], radians_dx[k]);
       CHECK(wrapped[k]);
-      CHECK(turns[k] > 1e4);         // the windings carry the run, not the wrapped angle
-      CHECK(max_dx[k] < 1e-6);       // measured 2.4e-8 (E = 15), 3.6e-9 (E = 400)
-      CHECK(rel_dv[k] < 1e-11);      // measured 1.4e-13, 3.3e-14
+      CHECK(turns[k] > 1e4);                    // the windings carry the run, not the wrapped angle
+      CHECK(max_dx[k] < 1e-6);                  // measured 7.4e-9 rad (E = 15), 7.0e-9 rad (E = 400)
+      CHECK(rel_dv[k] < 1e-11);                 // measured 4.9e-14, 3.8e-14
+      CHECK(100 * max_dx[k] < radians_dx[k]);   // measured 1.0e-5 and 9.4e-6 rad in plain double radians
     }
   }
 

@@ -11,11 +11,14 @@
 //   unwrapped positions.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "arnoldweb/plan.hpp"
+#include "arnoldweb/result.hpp"
 #include "arnoldweb/scene.hpp"
 #include "aw_params.h"
 #include "core_double.hpp"
@@ -229,6 +232,117 @@ inline std::vector<double> twin_growth(const arnoldweb::Plan& plan, const core_d
     g[static_cast<std::size_t>(t)] = distance(a, to_ld(b)) / d0;
   }
   return g;
+}
+
+// ------------------------------------------------------------------ drift
+// The energy error dE(t) = E(t) - E(0) of one orbit sampled every `every`
+// steps for `steps` steps, and a straight line fitted to it.
+struct DriftStats {
+  double duration = 0;     // in T
+  double max_abs = 0;      // max |dE| over the run (the error's amplitude)
+  double slope_total = 0;  // least-squares slope of dE against t, times the duration
+  double z = 0;            // that slope over its standard error from block means
+  double first_max = 0;    // max |dE| in the first and the last of `blocks` blocks
+  double last_max = 0;
+};
+
+inline DriftStats energy_drift(const Orbit& o, std::int64_t steps, std::int64_t every, int blocks = 20) {
+  const arnoldweb::Plan plan = arnoldweb::make_plan(orbit_scene(o, 1.0));
+  core_d::aw_lstate s = orbit_start(plan, o.index);
+  const double e0 = core_d::aw_energy(&s);
+  const std::int64_t samples = steps / every, per_block = samples / blocks;
+  std::vector<double> block_mean(static_cast<std::size_t>(blocks), 0.0), block_max(static_cast<std::size_t>(blocks), 0.0);
+  // running sums for the least-squares line through all samples (t in units of samples)
+  long double st = 0, sd = 0, stt = 0, std_ = 0;
+  DriftStats r;
+  for (std::int64_t i = 0; i < samples; ++i) {
+    core_d::aw_segment(&s, every, plan.rp.data(), plan.method.stages, plan.method.kick_first);
+    const double de = core_d::aw_energy(&s) - e0;
+    const long double t = static_cast<long double>(i + 1);
+    st += t;
+    sd += de;
+    stt += t * t;
+    std_ += t * de;
+    r.max_abs = std::max(r.max_abs, std::fabs(de));
+    const std::size_t b = static_cast<std::size_t>(std::min<std::int64_t>(i / per_block, blocks - 1));
+    block_mean[b] += de / static_cast<double>(per_block);
+    block_max[b] = std::max(block_max[b], std::fabs(de));
+  }
+  const long double n = static_cast<long double>(samples);
+  const long double slope = (n * std_ - st * sd) / (n * stt - st * st);  // per sample
+  r.slope_total = static_cast<double>(slope * n);
+  // the same slope from the block means, with its standard error (the block
+  // means are nearly independent where single samples are not)
+  double mb = 0, mx = 0;
+  for (int b = 0; b < blocks; ++b) {
+    mb += block_mean[static_cast<std::size_t>(b)] / blocks;
+    mx += (b + 0.5) / blocks;
+  }
+  double sxy = 0, sxx = 0;
+  for (int b = 0; b < blocks; ++b) {
+    sxy += (b + 0.5 - mx) * (block_mean[static_cast<std::size_t>(b)] - mb);
+    sxx += (b + 0.5 - mx) * (b + 0.5 - mx);
+  }
+  const double bslope = sxy / sxx;
+  double res = 0;
+  for (int b = 0; b < blocks; ++b) {
+    const double e = block_mean[static_cast<std::size_t>(b)] - mb - bslope * (b + 0.5 - mx);
+    res += e * e;
+  }
+  const double se = std::sqrt(res / (blocks - 2) / sxx);
+  r.z = se > 0 ? bslope / se : 0;
+  r.first_max = block_max.front();
+  r.last_max = block_max.back();
+  r.duration = static_cast<double>(steps) * plan.step;
+  return r;
+}
+
+// ------------------------------------------------------------ reversal
+// Phase-space distance of every trajectory's final state from its initial
+// state (positions in radians from winding counts and wrapped turns).
+inline std::vector<double> return_errors(const arnoldweb::Result& r) {
+  std::vector<double> err;
+  for (std::size_t i = 0; i < r.trajectories; ++i) {
+    double dx2 = 0, dp2 = 0;
+    for (int c = 0; c < 3; ++c) {
+      const double turns = static_cast<double>(r.final_i[i * AW_STATE_INTS + c]) +
+                           (r.final_r[i * AW_STATE_REALS + c] - r.initial_r[i * AW_STATE_REALS + c]);
+      const double dx = 2 * M_PI * turns;
+      const double dp = r.final_r[i * AW_STATE_REALS + 3 + c] - r.initial_r[i * AW_STATE_REALS + 3 + c];
+      dx2 += dx * dx;
+      dp2 += dp * dp;
+    }
+    err.push_back(std::sqrt(dx2) + std::sqrt(dp2));
+  }
+  return err;
+}
+
+inline double quantile(std::vector<double> v, double q) {
+  std::sort(v.begin(), v.end());
+  const std::size_t i = std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())));
+  return v[i];
+}
+
+template <class T>
+long first_difference(const std::vector<T>& a, const std::vector<T>& b) {
+  if (a.size() != b.size()) return 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (std::memcmp(&a[i], &b[i], sizeof(T)) != 0) return static_cast<long>(i);
+  return -1;
+}
+
+// Forward t T, P -> -P, t T again, P -> -P, in the core; the distance from the start.
+inline double core_return_error(const arnoldweb::Plan& plan, const core_d::aw_lstate& start, int t) {
+  core_d::aw_lstate s = start;
+  advance(&s, plan, t, steps_per_t(plan));
+  s.px = -s.px;
+  s.py = -s.py;
+  s.pz = -s.pz;
+  advance(&s, plan, t, steps_per_t(plan));
+  s.px = -s.px;
+  s.py = -s.py;
+  s.pz = -s.pz;
+  return distance(s, to_ld(start));
 }
 
 }  // namespace hard
