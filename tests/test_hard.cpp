@@ -227,6 +227,7 @@ TEST_SUITE("hard") {
       CHECK(q90 < c.q90_max);
       if (c.energy < 100) CHECK(mx > 1e-4);  // chaotic members amplify rounding: the hook integrates
       for (const auto& dev : awtest::devices_under_test()) {
+        if (dev.id == "cpu") continue;  // the reference itself
         CAPTURE(dev.id);
         const Result r = awtest::run_on(dev.id, plan);
         const long d = first_difference(r.final_r, ref.final_r);
@@ -315,10 +316,13 @@ TEST_SUITE("hard") {
         CHECK(r.binned == s.trajectories);
         CHECK(std::accumulate(r.map.begin(), r.map.end(), std::uint64_t{0}) == s.trajectories);
         CHECK(r.energy.max <= 1e-8);
+        std::uint64_t not_ok = 0, unwrapped_angles = 0;
         for (std::size_t i = 0; i < s.trajectories; ++i) {
-          CHECK(r.final_i[i * AW_STATE_INTS + 3] == AW_STATUS_OK);
-          for (int k = 0; k < 3; ++k) CHECK(std::fabs(r.final_r[i * AW_STATE_REALS + k]) <= 0.5);
+          not_ok += r.final_i[i * AW_STATE_INTS + 3] != AW_STATUS_OK;
+          for (int k = 0; k < 3; ++k) unwrapped_angles += !(std::fabs(r.final_r[i * AW_STATE_REALS + k]) <= 0.5);
         }
+        CHECK(not_ok == 0);
+        CHECK(unwrapped_angles == 0);
         if (c.energy < -1) {
           // trapped: every trajectory stays in its well (x^2 + y'^2 + 2 z^2 < 0.1
           // about a minimum: |dx| < 0.32 rad = 0.05 turns), winding counts and
