@@ -37,8 +37,10 @@ Result run(const Plan& plan, Backend& backend, const RunOptions& options) {
   const auto t_start = clock::now();
   backend.prepare(plan, max_chunk);
   r.kernel = backend.kernel_description();
-  std::uint64_t chunk = plan.scene.chunk ? plan.scene.chunk
-                                         : std::min(max_chunk, std::max<std::uint64_t>(1, backend.preferred_chunk() / 4));
+  // A launch below one wave of the device takes as long as a full wave (each
+  // thread integrates its whole trajectory), so chunks never shrink below it.
+  const std::uint64_t min_chunk = std::min(max_chunk, std::max<std::uint64_t>(1, backend.preferred_chunk() / 4));
+  std::uint64_t chunk = plan.scene.chunk ? plan.scene.chunk : min_chunk;
   double esum = 0;
   std::uint64_t done = 0;
   ChunkOutput out;
@@ -75,7 +77,7 @@ Result run(const Plan& plan, Backend& backend, const RunOptions& options) {
       // aim at chunk_seconds per launch; grow at most 4x at a time
       const double target = static_cast<double>(count) * options.chunk_seconds / dt;
       chunk = static_cast<std::uint64_t>(std::clamp(target, 1.0, 4.0 * static_cast<double>(count)));
-      chunk = std::clamp<std::uint64_t>(chunk, 1, max_chunk);
+      chunk = std::clamp<std::uint64_t>(chunk, min_chunk, max_chunk);
     }
   }
   r.completed = done;
