@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The paper's Figures 2-4 at the paper's N on the GPU machine (device tool):
-#   bash bench/gpu/figures.sh [device]          (default device: cuda:0)
+#   [FIGS="fig3_e15 ..."] bash bench/gpu/figures.sh [device]   (default: all three, cuda:0)
 # Builds if build-gpu/ is missing (as bench/gpu/run.sh does), runs every
 # figure scene with timing, and packs each output directory (summary.json,
 # map.h5, panels; no pictures: the image has no cairo) into $OUT/figN.tgz.
@@ -23,7 +23,7 @@ fi
 build-gpu/arnoldweb devices
 mkdir -p figs
 echo "figure,device,trajectories,wall_seconds,trajectory_steps_per_second,energy_error_max,binned,map_digest" > "$OUT/figures.csv"
-for fig in fig3_e15 fig2_e400 fig4_diffusion; do
+for fig in ${FIGS:-fig3_e15 fig2_e400 fig4_diffusion}; do
   stamp "$fig on $device"
   start=$SECONDS
   build-gpu/arnoldweb run "scenes/$fig.toml" --device "$device" --out "figs/$fig" --force --quiet || echo "$fig FAILED"
