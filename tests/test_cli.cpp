@@ -121,6 +121,12 @@ TEST_SUITE("cli") {
     std::ifstream f(empty + "/devices.txt");
     const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
     CAPTURE(text);
+    if (contains(text, "opencl:0")) {
+      // some ICD loaders (Ubuntu 24.04's) still find platforms registered elsewhere
+      MESSAGE("this system's OpenCL ICD loader ignores OCL_ICD_VENDORS: a machine without OpenCL cannot be "
+              "simulated here (the case runs on Debian, e.g. in CI)");
+      return;
+    }
     CHECK(contains(text, "no OpenCL platform found"));
     CHECK(contains(text, "pocl-opencl-icd"));
     CHECK(contains(text, "cpu"));

@@ -1,6 +1,8 @@
 // arnoldweb: the output directory of a run. Files are produced in a staging
 // directory beside it and moved into place at the end, so an output directory
 // is either absent or complete; what was computed is never lost.
+#include <fcntl.h>
+#include <stdio.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -81,16 +83,22 @@ std::vector<std::string> write_outputs(const Plan& plan, const Result& result, c
     throw OutputError(dir, "writing failed: " + failure);
   }
 
-  // move into place
+  // move into place; without --force never over a directory that appeared meanwhile
   const fs::path old = final_dir.string() + ".old-" + std::to_string(::getpid());
-  if (fs::exists(final_dir, ec)) {
+  const bool replacing = fs::exists(final_dir, ec);
+  if (replacing) {
+    if (!force) throw OutputError(dir, "appeared while the run was computing; the results are in " + staging.string());
     fs::rename(final_dir, old, ec);
     if (ec) throw OutputError(dir, "cannot move the existing directory aside: " + ec.message() +
                                        " (the results are in " + staging.string() + ")");
   }
-  fs::rename(staging, final_dir, ec);
-  if (ec) throw OutputError(dir, "cannot move the results into place: " + ec.message() +
-                                     " (they are in " + staging.string() + ")");
+  int rc = ::renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, final_dir.c_str(), RENAME_NOREPLACE);
+  if (rc != 0 && errno == EINVAL) rc = std::rename(staging.c_str(), final_dir.c_str());  // no NOREPLACE here
+  if (rc != 0) {
+    const std::string why = std::strerror(errno);
+    if (replacing) fs::rename(old, final_dir, ec);  // put the old directory back
+    throw OutputError(dir, "cannot move the results into place: " + why + " (they are in " + staging.string() + ")");
+  }
   fs::remove_all(old, ec);
 
   std::vector<std::string> written;
