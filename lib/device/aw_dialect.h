@@ -156,7 +156,7 @@ AW_FN bool aw_isfinite(real x) { return std::isfinite(x); }
  * loop of scalar fma calls over vector elements, so use the vector FMA
  * instructions where the target has them (same IEEE result per element). */
 AW_FN lreal aw_fma(lreal a, lreal b, lreal c) {
-  lreal r;
+  lreal r = c; /* every element is overwritten below */
 #if defined(__AVX512F__) && !defined(AW_FLOAT) && AW_LANES == 8
   r = (lreal)_mm512_fmadd_pd((__m512d)a, (__m512d)b, (__m512d)c);
 #elif defined(__AVX512F__) && defined(AW_FLOAT) && AW_LANES == 16
@@ -184,7 +184,7 @@ AW_FN lreal aw_fma(lreal a, lreal b, lreal c) {
   return r;
 }
 AW_FN lreal aw_sqrt(lreal x) {
-  lreal r;
+  lreal r = x; /* every element is overwritten below */
   for (int i = 0; i < AW_LANES; ++i) r[i] = std::sqrt(x[i]);
   return r;
 }

@@ -1,6 +1,7 @@
 // arnoldweb: the whole public API.
 #pragma once
 
+#include "arnoldweb/accuracy.hpp"
 #include "arnoldweb/analysis.hpp"
 #include "arnoldweb/device.hpp"
 #include "arnoldweb/errors.hpp"

@@ -209,7 +209,8 @@ Plan make_plan(const Scene& scene) {
              fmt(p.guard.value) + " >= pi (k = 2 for z, |p|max = " + fmt(p.guard.p_max) +
              "), where splitting methods resonate and the energy error grows by orders of "
              "magnitude; use integrator.step = " + fmt(p.guard.safe_step) +
-             " (h k |p|max = pi/2) or set integrator.allow_unsafe_step = true to run anyway");
+             " (h k |p|max = pi/2), or integrator.step = \"auto\" with an integrator.tolerance, or set "
+             "integrator.allow_unsafe_step = true to run anyway");
   if (p.guard.refused())
     p.warnings.push_back("integrator.step: h k |p|max = " + fmt(p.guard.value) +
                          " >= pi, allowed by integrator.allow_unsafe_step");
