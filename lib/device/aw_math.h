@@ -55,6 +55,8 @@ AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) {
 #else
   const real twopi = AW_R(6.283185307179586);
 #if AW_LANES > 1
+  *s = u; /* every element is overwritten below */
+  *c = u;
   for (int i = 0; i < AW_LANES; ++i) {
     (*s)[i] = std::sin(twopi * u[i]);
     (*c)[i] = std::cos(twopi * u[i]);
