@@ -86,6 +86,24 @@ Scene scene_for(const Options& o, const std::string& variant, const std::string&
   if (variant == "energy_limit") s.max_energy_error = 1e-3;
   s.final_states = variant == "final_states";
   s.initial_states = variant == "initial_states";
+  if (variant == "confine") {  // a square so large that nobody leaves it: the cost of the test alone
+    s.confine = true;
+    s.confine_center = {45.0, 0.0};
+    s.confine_width = 119.0;
+    s.initial = "cap";
+    s.cap_center = {45.0, 0.0};
+    s.cap_radius = 10.0;
+  }
+  if (variant == "zoom") {
+    s.zoom = true;
+    s.zoom_center = {45.0, 0.0};
+    s.zoom_width = 60.0;
+  }
+  if (variant == "frames") {  // 10 windows, 4 frames
+    s.average = s.average / 10;
+    s.energy_every = energy_every(s.average);
+    s.frame_times = {0.0, s.average, 3 * s.average, 6 * s.average, 10 * s.average};
+  }
   s.precision = precision == "float" ? Precision::Float : Precision::Double;
   s.math = math == "native" ? MathMode::Native : MathMode::Portable;
   s.output_dir = "";
@@ -508,7 +526,7 @@ int run(Options o, const std::string& command, std::ostream& log) {
   // ---- the cost of effects
   std::vector<Row> eff;
   if (o.effects) {
-    const std::vector<std::string> vars = {"bare", "default", "energy_limit", "final_states"};
+    const std::vector<std::string> vars = {"bare", "default", "energy_limit", "final_states", "confine", "zoom", "frames"};
     for (const auto& d : devices) {
       std::unique_ptr<Backend> b;
       try {
