@@ -12,6 +12,7 @@
 // the pilot ensemble; if it misses, the measurement joins the fit and the
 // search repeats.
 #include "arnoldweb/accuracy.hpp"
+#include "core/scene_checks.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -34,17 +35,9 @@ std::string fmt(double v) {
   return buf;
 }
 
-std::int64_t exact_ratio(double x, double unit) {
-  const double r = x / unit;
-  const double n = std::nearbyint(r);
-  if (n < 1 || std::fabs(r - n) > 1e-9 * n) return 0;
-  return static_cast<std::int64_t>(n);
-}
-
+using detail::exact_ratio;
 [[noreturn]] void fail(const Scene& s, const std::string& key, const std::string& message) {
-  const SourcePos p = s.pos(key);
-  if (p.set_index > 0) throw SceneError(s.origin(key), 0, 0, key, message);
-  throw SceneError(s.file, p.line, p.column, key, message);
+  detail::fail_at(s, key, message);
 }
 
 bool written(const Scene& s, const std::string& key) {

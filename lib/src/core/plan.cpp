@@ -10,6 +10,7 @@
 #include "arnoldweb/accuracy.hpp"
 #include "arnoldweb/device.hpp"
 #include "arnoldweb/errors.hpp"
+#include "core/scene_checks.hpp"
 #include "aw_model.h"
 #include "aw_params.h"
 #include "aw_rng.h"
@@ -30,20 +31,9 @@ std::string fmt(double v) {
   return buf;
 }
 
-// n if x / unit is within rounding of the integer n >= 1, else 0.
-std::int64_t exact_ratio(double x, double unit) {
-  const double r = x / unit;
-  const double n = std::nearbyint(r);
-  if (n < 1 || std::fabs(r - n) > 1e-9 * n) return 0;
-  return static_cast<std::int64_t>(n);
-}
-
-// A problem with the value of `key`, reported where that value came from: the
-// file position, or the --set override that gave it.
+using detail::exact_ratio;
 [[noreturn]] void fail(const Scene& s, const std::string& key, const std::string& message) {
-  const SourcePos p = s.pos(key);
-  if (p.set_index > 0) throw SceneError(s.origin(key), 0, 0, key, message);
-  throw SceneError(s.file, p.line, p.column, key, message);
+  detail::fail_at(s, key, message);
 }
 
 constexpr double kDeg = M_PI / 180.0;
@@ -64,6 +54,23 @@ void region_of(const std::array<double, 2>& center, double width, double* out) {
 }
 
 }  // namespace
+
+namespace detail {
+
+std::int64_t exact_ratio(double x, double unit) {
+  const double r = x / unit;
+  const double n = std::nearbyint(r);
+  if (n < 1 || std::fabs(r - n) > 1e-9 * n) return 0;
+  return static_cast<std::int64_t>(n);
+}
+
+void fail_at(const Scene& s, const std::string& key, const std::string& message) {
+  const SourcePos p = s.pos(key);
+  if (p.set_index > 0) throw SceneError(s.origin(key), 0, 0, key, message);
+  throw SceneError(s.file, p.line, p.column, key, message);
+}
+
+}  // namespace detail
 
 std::string KernelConfig::defines() const {
   std::ostringstream o;
