@@ -3,6 +3,7 @@
 // exits 77 (CTest: skipped) and says why.
 #pragma once
 
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,15 @@ arnoldweb::Scene scene_from(const std::string& toml, const std::vector<std::stri
 
 // Plan and run a scene on a device, quietly.
 arnoldweb::Result run_on(const std::string& device, const arnoldweb::Plan& plan);
+
+// Index of the first element whose bits differ, -1 if none (0 if the sizes differ).
+template <class T>
+long first_difference(const std::vector<T>& a, const std::vector<T>& b) {
+  if (a.size() != b.size()) return 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (std::memcmp(&a[i], &b[i], sizeof(T)) != 0) return static_cast<long>(i);
+  return -1;
+}
 
 // A fresh empty temporary directory (removed at exit).
 std::string temp_dir(const std::string& tag);

@@ -230,9 +230,9 @@ TEST_SUITE("hard") {
         if (dev.id == "cpu") continue;  // the reference itself
         CAPTURE(dev.id);
         const Result r = awtest::run_on(dev.id, plan);
-        const long d = first_difference(r.final_r, ref.final_r);
+        const long d = awtest::first_difference(r.final_r, ref.final_r);
         CHECK_MESSAGE(d == -1, "first differing state value at trajectory " << d / AW_STATE_REALS);
-        CHECK(first_difference(r.final_i, ref.final_i) == -1);
+        CHECK(awtest::first_difference(r.final_i, ref.final_i) == -1);
         CHECK(digest_final_states(r) == digest_final_states(ref));
       }
     }

@@ -323,14 +323,6 @@ inline double quantile(std::vector<double> v, double q) {
   return v[i];
 }
 
-template <class T>
-long first_difference(const std::vector<T>& a, const std::vector<T>& b) {
-  if (a.size() != b.size()) return 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (std::memcmp(&a[i], &b[i], sizeof(T)) != 0) return static_cast<long>(i);
-  return -1;
-}
-
 // Forward t T, P -> -P, t T again, P -> -P, in the core; the distance from the start.
 inline double core_return_error(const arnoldweb::Plan& plan, const core_d::aw_lstate& start, int t) {
   core_d::aw_lstate s = start;

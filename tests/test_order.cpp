@@ -112,14 +112,6 @@ double fitted_order(const std::vector<int>& steps_per_t, const std::vector<doubl
   return sxy / sxx;
 }
 
-template <class T>
-long first_difference(const std::vector<T>& a, const std::vector<T>& b) {
-  if (a.size() != b.size()) return 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (std::memcmp(&a[i], &b[i], sizeof(T)) != 0) return static_cast<long>(i);
-  return -1;
-}
-
 }  // namespace
 
 TEST_SUITE("order") {
@@ -181,9 +173,9 @@ TEST_SUITE("order") {
         if (dev.id == "cpu") continue;
         CAPTURE(dev.id);
         const Result r = awtest::run_on(dev.id, plan);
-        const long d = first_difference(r.final_r, ref.final_r);
+        const long d = awtest::first_difference(r.final_r, ref.final_r);
         CHECK_MESSAGE(d == -1, "first differing state value at trajectory " << d / AW_STATE_REALS);
-        CHECK(first_difference(r.final_i, ref.final_i) == -1);
+        CHECK(awtest::first_difference(r.final_i, ref.final_i) == -1);
         CHECK(r.energy.max == ref.energy.max);
         CHECK(r.energy.log_hist == ref.energy.log_hist);
         CHECK(digest_map(r) == digest_map(ref));

@@ -32,15 +32,6 @@ Scene parity_scene(Precision precision, MathMode math) {
   return s;
 }
 
-// Index of the first differing element, or -1.
-template <class T>
-long first_difference(const std::vector<T>& a, const std::vector<T>& b) {
-  if (a.size() != b.size()) return 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (std::memcmp(&a[i], &b[i], sizeof(T)) != 0) return static_cast<long>(i);
-  return -1;
-}
-
 const Result& cpu_reference(Precision p) {
   static std::map<Precision, Result> cache;
   auto it = cache.find(p);
@@ -59,10 +50,10 @@ TEST_SUITE("parity") {
         CAPTURE(dev.id);
         CAPTURE(to_string(p));
         const Result r = awtest::run_on(dev.id, make_plan(parity_scene(p, MathMode::Portable)));
-        CHECK(first_difference(r.initial_r, ref.initial_r) == -1);
-        const long d = first_difference(r.final_r, ref.final_r);
+        CHECK(awtest::first_difference(r.initial_r, ref.initial_r) == -1);
+        const long d = awtest::first_difference(r.final_r, ref.final_r);
         CHECK_MESSAGE(d == -1, "first differing state value at trajectory " << d / AW_STATE_REALS);
-        CHECK(first_difference(r.final_i, ref.final_i) == -1);
+        CHECK(awtest::first_difference(r.final_i, ref.final_i) == -1);
         CHECK(digest_map(r) == digest_map(ref));
         CHECK(r.binned == ref.binned);
         CHECK(r.flagged() == ref.flagged());
