@@ -199,8 +199,14 @@ TEST_SUITE("output") {
       CHECK(e.path().filename().string().find(".partial-") == std::string::npos);
   }
 
-  TEST_CASE("an output directory whose parent is missing is refused before any work") {
-    CHECK_THROWS_WITH_AS(check_output_dir("/nonexistent-arnoldweb/x/out", false),
-                         doctest::Contains("does not exist"), OutputError);
+  TEST_CASE("missing parent directories are made; an impossible place is refused before any work") {
+    const std::string file = awtest::temp_dir("parents") + "/a-file";
+    std::ofstream(file) << "not a directory";
+    CHECK_THROWS_WITH_AS(check_output_dir(file + "/x/out", false), doctest::Contains("is not a directory"), OutputError);
+    const std::string dir = awtest::temp_dir("parents") + "/a/b/out";
+    CHECK_NOTHROW(check_output_dir(dir, false));
+    CHECK_FALSE(fs::exists(fs::path(dir).parent_path()));  // nothing made before the run
+    write_outputs(small_plan(), small_result(), dir, false);
+    CHECK(fs::exists(dir + "/summary.json"));
   }
 }

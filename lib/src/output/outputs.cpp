@@ -25,12 +25,15 @@ void check_output_dir(const std::string& dir, bool force) {
     if (!force) throw OutputError(dir, "exists; use --force to replace it, or choose another with --out");
     if (!fs::is_directory(p, ec)) throw OutputError(dir, "exists and is not a directory");
   }
-  fs::path parent = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  if (parent.empty()) parent = ".";
-  if (!fs::is_directory(parent, ec))
-    throw OutputError(dir, "its parent directory " + parent.string() + " does not exist");
-  if (::access(parent.c_str(), W_OK | X_OK) != 0)
-    throw OutputError(dir, "its parent directory " + parent.string() + " is not writable (" +
+  // missing parents are created when the results are written (mkdir -p); here
+  // the nearest existing ancestor must be a writable directory
+  fs::path ancestor = fs::absolute(p, ec).parent_path();
+  while (!ancestor.empty() && !fs::exists(ancestor, ec) && ancestor != ancestor.parent_path())
+    ancestor = ancestor.parent_path();
+  if (!fs::is_directory(ancestor, ec))
+    throw OutputError(dir, ancestor.string() + " is not a directory, so the output directory cannot be made");
+  if (::access(ancestor.c_str(), W_OK | X_OK) != 0)
+    throw OutputError(dir, "cannot create it: " + ancestor.string() + " is not writable (" +
                                std::strerror(errno) + ")");
 }
 
@@ -40,6 +43,7 @@ std::vector<std::string> write_outputs(const Plan& plan, const Result& result, c
   const fs::path final_dir(dir);
   const fs::path staging = final_dir.string() + ".partial-" + std::to_string(::getpid());
   std::error_code ec;
+  if (final_dir.has_parent_path()) fs::create_directories(final_dir.parent_path(), ec);
   fs::remove_all(staging, ec);
   if (!fs::create_directories(staging, ec))
     throw OutputError(staging.string(), "cannot create the staging directory: " + ec.message());
