@@ -53,7 +53,7 @@ void ConsoleProgress::update(std::uint64_t done, std::uint64_t total, double sec
   }
 }
 
-void ConsoleProgress::finish(std::uint64_t done, std::uint64_t total, double seconds) {
+void ConsoleProgress::finish(std::uint64_t, std::uint64_t, double) {
   if (quiet_) return;
   if (tty_) std::fprintf(stderr, "\n");
 }

@@ -32,7 +32,7 @@ std::vector<DeviceInfo> list_devices();
 std::vector<std::string> backend_problems();
 
 // What one chunk of trajectories produced (the histogram stays on the device
-// until read_map()).
+// until read_histograms()).
 struct ChunkOutput {
   std::vector<std::uint32_t> counters;  // AW_C_COUNT
   std::vector<double> group_stats;      // (max, sum) pairs of max|dE|
@@ -51,8 +51,10 @@ class Backend {
   virtual void prepare(const Plan& plan, std::uint64_t max_chunk) = 0;
   // Trajectories [first, first + count), count <= max_chunk. Blocks until done.
   virtual void run_chunk(std::uint64_t first, std::uint64_t count, ChunkOutput& out) = 0;
-  // The velocity map accumulated over all chunks since prepare().
-  virtual std::vector<std::uint64_t> read_map() = 0;
+  // Every histogram accumulated over all chunks since prepare(), 64-bit counts
+  // in the plan's layout: plan.frames maps of plan.npix pixels, then the
+  // plan.zoom_resolution^2 zoom bins (plan.hist_size in all).
+  virtual std::vector<std::uint64_t> read_histograms() = 0;
   // Trajectories per launch that keep the device busy (a lower bound for chunks).
   virtual std::uint64_t preferred_chunk() const = 0;
   // Compiler options / variant used, for the summary.

@@ -82,7 +82,7 @@ Result run(const Plan& plan, Backend& backend, const RunOptions& options) {
   }
   r.completed = done;
   // the device's histograms: F frames of the map, then the zoom
-  const std::vector<std::uint64_t> hist = backend.read_map();
+  const std::vector<std::uint64_t> hist = backend.read_histograms();
   const std::uint64_t npix = plan.npix;
   r.map.assign(npix, 0);
   for (int f = 0; f < plan.frames; ++f) {

@@ -94,7 +94,7 @@ class CpuBackend final : public Backend {
     }
   }
 
-  std::vector<std::uint64_t> read_map() override { return map64_; }
+  std::vector<std::uint64_t> read_histograms() override { return map64_; }
   std::uint64_t preferred_chunk() const override { return kCpuBlock * info_.compute_units * 4; }
   std::string kernel_description() const override { return variant_; }
 

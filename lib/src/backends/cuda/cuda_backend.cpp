@@ -52,7 +52,7 @@ class CudaBackend final : public Backend {
     check_device_memory(plan, info_, max_chunk, info_.memory);
     float_ = plan.kernel.precision == Precision::Float;
     features_ = plan.kernel.features;
-    npix_ = plan.hist_size;  // every histogram: frames of the map, then the zoom
+    hist_size_ = plan.hist_size;  // every histogram: frames of the map, then the zoom
     max_chunk_ = max_chunk;
     defines_ = plan.kernel.defines();
     target_ = nvrtc_target(cc_, info_.id + " (" + info_.name + ")");
@@ -95,12 +95,12 @@ class CudaBackend final : public Backend {
                                   args, 2 * block_ * rs, s),
                  info_.id, "cudaLaunchKernel", "aw_ensemble over " + range);
     }
-    if (npix_) {
+    if (hist_size_) {
       void* total = map64_.get();
       void* part = map32_.get();
-      unsigned long long n = npix_;
+      unsigned long long n = hist_size_;
       void* args[] = {&total, &part, &n};
-      const unsigned fg = static_cast<unsigned>((npix_ + kFoldBlock - 1) / kFoldBlock);
+      const unsigned fg = static_cast<unsigned>((hist_size_ + kFoldBlock - 1) / kFoldBlock);
       cuda_check(cudaLaunchKernel(reinterpret_cast<const void*>(fold_), dim3(fg), dim3(kFoldBlock),
                                   args, 0, s),
                  info_.id, "cudaLaunchKernel", "aw_fold");
@@ -119,11 +119,11 @@ class CudaBackend final : public Backend {
     }
   }
 
-  std::vector<std::uint64_t> read_map() override {
-    std::vector<std::uint64_t> m(npix_);
-    if (npix_) {
+  std::vector<std::uint64_t> read_histograms() override {
+    std::vector<std::uint64_t> m(hist_size_);
+    if (hist_size_) {
       select();
-      download(map64_, m.data(), npix_ * 8);
+      download(map64_, m.data(), hist_size_ * 8);
     }
     return m;
   }
@@ -220,7 +220,7 @@ class CudaBackend final : public Backend {
   void allocate(const Plan& plan) {
     const std::size_t rs = real_size();
     const std::size_t max_groups = (max_chunk_ + block_ - 1) / block_ + 1;
-    const std::size_t npix = std::max<std::uint64_t>(npix_, 1);
+    const std::size_t npix = std::max<std::uint64_t>(hist_size_, 1);
     const std::size_t state_r = (features_ & AW_F_INITIAL_STATES) ? max_chunk_ * AW_STATE_REALS * rs : 0;
     const std::size_t final_r = (features_ & AW_F_FINAL_STATES) ? max_chunk_ * AW_STATE_REALS * rs : 0;
     const std::size_t final_i = (features_ & AW_F_FINAL_STATES) ? max_chunk_ * AW_STATE_INTS * 8 : 0;
@@ -292,7 +292,7 @@ class CudaBackend final : public Backend {
   std::string defines_, options_, jit_log_;
   bool float_ = false;
   std::uint32_t features_ = 0;
-  std::uint64_t npix_ = 0, max_chunk_ = 0;
+  std::uint64_t hist_size_ = 0, max_chunk_ = 0;
   unsigned block_ = kBlock;
   int blocks_per_sm_ = 4;
 };

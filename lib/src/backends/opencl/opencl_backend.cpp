@@ -81,7 +81,7 @@ class OpenclBackend final : public Backend {
     require_fp64(plan, info_);
     check_device_memory(plan, info_, max_chunk, device_.get_info<cl_ulong>(CL_DEVICE_MAX_MEM_ALLOC_SIZE));
     features_ = plan.kernel.features;
-    npix_ = plan.hist_size;  // every histogram: frames of the map, then the zoom
+    hist_size_ = plan.hist_size;  // every histogram: frames of the map, then the zoom
     lanes_ = info_.is_cpu ? 8 : 1;
     if (const char* env = std::getenv("ARNOLDWEB_OPENCL_LANES")) lanes_ = std::atoi(env);
     if (lanes_ != 1 && lanes_ != 2 && lanes_ != 4 && lanes_ != 8 && lanes_ != 16)
@@ -98,7 +98,6 @@ class OpenclBackend final : public Backend {
       wg_ = info_.is_cpu ? 16 : 128;
       wg_ = std::min<std::size_t>(wg_, ensemble_.get_work_group_info<std::size_t>(device_, CL_KERNEL_WORK_GROUP_SIZE));
       wg_ = floor_pow2(std::max<std::size_t>(wg_, 1));
-      max_chunk_ = max_chunk;
       const std::size_t max_groups = (max_chunk / lanes_ + wg_) / wg_ + 1;
       std::vector<double> rpd = plan.rp;
       std::vector<float> rpf(plan.rp.begin(), plan.rp.end());
@@ -107,7 +106,7 @@ class OpenclBackend final : public Backend {
                                   float_ ? static_cast<const void*>(rpf.data()) : static_cast<const void*>(rpd.data()));
       ip_ = compute::buffer(context_, plan.ip.size() * 8, compute::buffer::read_only);
       queue_.enqueue_write_buffer(ip_, 0, plan.ip.size() * 8, plan.ip.data());
-      const std::size_t npix = std::max<std::uint64_t>(npix_, 1);
+      const std::size_t npix = std::max<std::uint64_t>(hist_size_, 1);
       map32_ = zeroed(npix * 4);
       map64_ = zeroed(npix * 8);
       counters_ = compute::buffer(context_, AW_C_COUNT * 4);
@@ -146,11 +145,11 @@ class OpenclBackend final : public Backend {
       k.set_arg(10, 2 * wg_ * rs, nullptr);
       call = "clEnqueueNDRangeKernel";
       queue_.enqueue_1d_range_kernel(k, 0, global, wg_);
-      if (npix_) {
+      if (hist_size_) {
         fold_.set_arg(0, map64_);
         fold_.set_arg(1, map32_);
-        fold_.set_arg(2, static_cast<cl_ulong>(npix_));
-        const std::size_t fg = (npix_ + 255) / 256 * 256;
+        fold_.set_arg(2, static_cast<cl_ulong>(hist_size_));
+        const std::size_t fg = (hist_size_ + 255) / 256 * 256;
         queue_.enqueue_1d_range_kernel(fold_, 0, fg, 0);
       }
       call = "clEnqueueReadBuffer";
@@ -169,10 +168,10 @@ class OpenclBackend final : public Backend {
     }
   }
 
-  std::vector<std::uint64_t> read_map() override {
-    std::vector<std::uint64_t> m(npix_);
+  std::vector<std::uint64_t> read_histograms() override {
+    std::vector<std::uint64_t> m(hist_size_);
     try {
-      if (npix_) queue_.enqueue_read_buffer(map64_, 0, npix_ * 8, m.data());
+      if (hist_size_) queue_.enqueue_read_buffer(map64_, 0, hist_size_ * 8, m.data());
     } catch (const compute::opencl_error& e) {
       rethrow(info_, "clEnqueueReadBuffer", e);
     }
@@ -248,7 +247,7 @@ class OpenclBackend final : public Backend {
   std::string options_;
   bool float_ = false;
   std::uint32_t features_ = 0;
-  std::uint64_t npix_ = 0, max_chunk_ = 0;
+  std::uint64_t hist_size_ = 0;
   int lanes_ = 1;
   std::size_t wg_ = 1;
 };
