@@ -16,7 +16,14 @@ std::uint64_t vec2pix_ring(int nside, const Vec3& v);
 // Unit vector to the centre of a pixel.
 Vec3 pix2vec_ring(int nside, std::uint64_t pix);
 
-// Unit vector of longitude lon and latitude lat, in degrees.
+// The orthonormal frame at longitude lon and latitude lat (degrees): the
+// direction c, and the tangent vectors east (of growing longitude) and north.
+struct TangentFrame {
+  Vec3 c, east, north;
+};
+TangentFrame tangent_frame(double lon_deg, double lat_deg);
+
+// Unit vector of longitude lon and latitude lat, in degrees (tangent_frame().c).
 Vec3 direction(double lon_deg, double lat_deg);
 
 // A resonance m.P = 0: a great circle of the momentum sphere.

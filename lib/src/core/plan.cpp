@@ -10,6 +10,7 @@
 #include "arnoldweb/accuracy.hpp"
 #include "arnoldweb/device.hpp"
 #include "arnoldweb/errors.hpp"
+#include "arnoldweb/sphere.hpp"
 #include "core/scene_checks.hpp"
 #include "aw_model.h"
 #include "aw_params.h"
@@ -41,10 +42,12 @@ constexpr double kDeg = M_PI / 180.0;
 // Orthonormal frame of the direction at longitude lon, latitude lat (degrees):
 // c the direction, e1 east, e2 north.
 void frame_of(double lon, double lat, double* out) {
-  const double cl = std::cos(lat * kDeg), sl = std::sin(lat * kDeg);
-  const double co = std::cos(lon * kDeg), so = std::sin(lon * kDeg);
-  const double f[9] = {cl * co, cl * so, sl, -so, co, 0.0, -sl * co, -sl * so, cl};
-  for (int i = 0; i < 9; ++i) out[i] = f[i];
+  const TangentFrame f = tangent_frame(lon, lat);
+  for (int i = 0; i < 3; ++i) {
+    out[i] = f.c[i];
+    out[3 + i] = f.east[i];
+    out[6 + i] = f.north[i];
+  }
 }
 
 // A gnomonic square region (aw_params.h layout) of full angular width `width`.

@@ -49,10 +49,14 @@ Vec3 pix2vec_ring(int nside, std::uint64_t pixel) {
   return {st * std::cos(phi), st * std::sin(phi), z};
 }
 
-Vec3 direction(double lon_deg, double lat_deg) {
-  const double lon = lon_deg * M_PI / 180, lat = lat_deg * M_PI / 180;
-  return {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
+TangentFrame tangent_frame(double lon_deg, double lat_deg) {
+  constexpr double deg = M_PI / 180.0;
+  const double cl = std::cos(lat_deg * deg), sl = std::sin(lat_deg * deg);
+  const double co = std::cos(lon_deg * deg), so = std::sin(lon_deg * deg);
+  return {{cl * co, cl * so, sl}, {-so, co, 0.0}, {-sl * co, -sl * so, cl}};
 }
+
+Vec3 direction(double lon_deg, double lat_deg) { return tangent_frame(lon_deg, lat_deg).c; }
 
 std::string Resonance::label() const {
   return "(" + std::to_string(m[0]) + "," + std::to_string(m[1]) + "," + std::to_string(m[2]) + ")";

@@ -45,10 +45,10 @@ void draw_path(cairo_t* cr, const View& view, double cx, double cy, double radiu
 }  // namespace
 
 View::View(double lon, double lat) {
-  const double lo = lon * M_PI / 180, la = lat * M_PI / 180;
-  v = direction(lon, lat);
-  e1 = {-std::sin(lo), std::cos(lo), 0.0};
-  e2 = {-std::sin(la) * std::cos(lo), -std::sin(la) * std::sin(lo), std::cos(la)};
+  const TangentFrame f = tangent_frame(lon, lat);
+  v = f.c;
+  e1 = f.east;
+  e2 = f.north;
 }
 double View::x(const Vec3& p) const { return dot(p, e1); }
 double View::y(const Vec3& p) const { return dot(p, e2); }
@@ -105,10 +105,9 @@ void draw_circles(Canvas& c, const View& view, double cx, double cy, double radi
 
 void draw_square(Canvas& c, const View& view, double cx, double cy, double radius, const std::array<double, 2>& centre,
                  double width) {
-  const double lo = centre[0] * M_PI / 180, la = centre[1] * M_PI / 180, w = std::tan(0.5 * width * M_PI / 180);
-  const Vec3 cv = direction(centre[0], centre[1]);
-  const Vec3 e1 = {-std::sin(lo), std::cos(lo), 0.0};
-  const Vec3 e2 = {-std::sin(la) * std::cos(lo), -std::sin(la) * std::sin(lo), std::cos(la)};
+  const double w = std::tan(0.5 * width * M_PI / 180);
+  const TangentFrame f = tangent_frame(centre[0], centre[1]);
+  const Vec3 &cv = f.c, &e1 = f.east, &e2 = f.north;
   const double corner[5][2] = {{-w, -w}, {w, -w}, {w, w}, {-w, w}, {-w, -w}};
   cairo_t* cr = c.cr();
   cairo_set_source_rgba(cr, 0.5, 1.0, 0.6, 0.95);

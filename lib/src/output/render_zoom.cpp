@@ -40,10 +40,8 @@ void render_zoom_png(const std::string& path, const std::vector<std::uint64_t>& 
   c.text(x0 + side / 2, y0 + side + 32, "east of the centre (deg)", 11, 0.75, 0.75, 0.75, true);
   // resonance lines m.(c + gx e1 + gy e2) = 0
   if (o.resonance_order > 0) {
-    const double lo = center[0] * M_PI / 180, la = center[1] * M_PI / 180;
-    const Vec3 cv = direction(center[0], center[1]);
-    const Vec3 e1 = {-std::sin(lo), std::cos(lo), 0.0};
-    const Vec3 e2 = {-std::sin(la) * std::cos(lo), -std::sin(la) * std::sin(lo), std::cos(la)};
+    const TangentFrame f = tangent_frame(center[0], center[1]);
+    const Vec3 &cv = f.c, &e1 = f.east, &e2 = f.north;
     cairo_save(cr);
     cairo_rectangle(cr, x0, y0, side, side);
     cairo_clip(cr);
