@@ -15,8 +15,7 @@ struct Inventory {
   std::vector<std::string> problems;
 };
 
-Inventory inventory() {
-  Inventory inv;
+void take_inventory(Inventory& inv) {
   inv.devices.push_back(detail::cpu_device_info());
 #ifdef ARNOLDWEB_HAVE_CUDA
   for (auto& d : detail::cuda_devices(inv.problems)) inv.devices.push_back(d);
@@ -25,6 +24,15 @@ Inventory inventory() {
                          "when it was configured)");
 #endif
   for (auto& d : detail::opencl_devices(inv.problems)) inv.devices.push_back(d);
+}
+
+// Devices do not come and go while a program runs: every backend is asked once.
+const Inventory& inventory() {
+  static const Inventory inv = [] {
+    Inventory i;
+    take_inventory(i);
+    return i;
+  }();
   return inv;
 }
 
@@ -69,7 +77,7 @@ std::unique_ptr<Backend> open_backend(const std::string& requested) {
       index = -1;
     }
   }
-  const Inventory inv = inventory();
+  const Inventory& inv = inventory();
   auto known = [&](const std::string& k) {
     for (const auto& d : inv.devices)
       if (d.id == k) return true;
