@@ -1,6 +1,7 @@
 // arnoldweb devices: the devices present, and why a backend has none.
 #include <cstdio>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "arnoldweb/device.hpp"
 #include "command.hpp"
@@ -8,28 +9,14 @@
 namespace arnoldweb::cli {
 namespace {
 
-std::string json_escape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '"' || c == '\\') o += '\\';
-    o += c;
-  }
-  return o;
-}
-
 int list(bool json) {
   const auto devs = list_devices();
   if (json) {
-    std::cout << "[";
-    for (std::size_t i = 0; i < devs.size(); ++i) {
-      const auto& d = devs[i];
-      std::cout << (i ? ",\n " : "") << "{\"id\": \"" << d.id << "\", \"name\": \"" << json_escape(d.name)
-                << "\", \"vendor\": \"" << json_escape(d.vendor) << "\", \"version\": \""
-                << json_escape(d.version) << "\", \"fp64\": " << (d.fp64 ? "true" : "false")
-                << ", \"compute_units\": " << d.compute_units << ", \"memory\": " << d.memory
-                << ", \"cpu\": " << (d.is_cpu ? "true" : "false") << "}";
-    }
-    std::cout << "]\n";
+    nlohmann::ordered_json j = nlohmann::ordered_json::array();
+    for (const auto& d : devs)
+      j.push_back({{"id", d.id}, {"name", d.name}, {"vendor", d.vendor}, {"version", d.version}, {"fp64", d.fp64},
+                   {"compute_units", d.compute_units}, {"memory", d.memory}, {"cpu", d.is_cpu}});
+    std::cout << j.dump(1) << "\n";
     return 0;
   }
   std::printf("%-10s %-40s %-28s %-5s %6s %9s\n", "id", "name", "vendor", "fp64", "units", "memory");
