@@ -1,4 +1,5 @@
-// arnoldweb check SCENE: validate a scene and print its plan; runs nothing.
+// arnoldweb check SCENE: validate a scene as `run` would (the scene, its
+// panels, the output directory) and print its plan; computes nothing.
 #include <iostream>
 
 #include "arnoldweb/device.hpp"
@@ -9,14 +10,26 @@
 namespace arnoldweb::cli {
 
 void add_check_command(CLI::App& app, Action& action) {
-  auto args = std::make_shared<SceneArgs>();
-  auto* c = app.add_subcommand("check", "Validate a scene and print the plan: effects compiled in, schedule, work");
-  add_scene_options(c, *args);
-  c->callback([&action, args] {
-    action = [args] {
-      const Plan plan = make_plan(load_scene_args(*args));
+  struct Flags {
+    SceneArgs scene;
+    bool force = false;
+  };
+  auto f = std::make_shared<Flags>();
+  auto* c = app.add_subcommand("check", "Validate a scene as `run` would and print the plan: effects compiled in, "
+                                        "schedule, work, outputs");
+  add_scene_options(c, f->scene);
+  c->add_flag("--force,-f", f->force, "Check as `run --force` would (replacing an earlier output directory)");
+  c->callback([&action, f] {
+    action = [f] {
+      const PreparedJob p = prepare_job(f->scene, f->force);
+      const Plan& plan = p.job.main();
       const std::string dev = plan.scene.device == "auto" ? default_device_id() + " (auto)" : plan.scene.device;
       print_plan(std::cout, plan, dev);
+      for (std::size_t k = 1; k < p.job.parts.size(); ++k)
+        std::cout << "panel        " << p.job.parts[k].name << ": " << short_number(p.job.parts[k].plan.trajectory_steps)
+                  << " trajectory-steps (" << p.job.parts[k].title << ")\n";
+      std::cout << "outputs      " << p.out_dir << " (about " << short_number(p.output.expected_bytes / 1e6)
+                << " MB at most)\n";
       return 0;
     };
   });

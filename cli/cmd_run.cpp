@@ -1,19 +1,16 @@
-// arnoldweb run SCENE: run a scene and write its outputs. Ctrl-C stops after
-// the current chunk and writes what was computed (exit 130).
-#include <atomic>
-#include <csignal>
+// arnoldweb run SCENE: run a scene (and its panels) and write the outputs.
+// SIGINT, SIGTERM and SIGHUP stop after the current chunk; what was computed
+// is written, and the exit code is 128 + the signal (130, 143, 129).
 #include <iostream>
 
 #include "arnoldweb/arnoldweb.hpp"
 #include "command.hpp"
 #include "plan_report.hpp"
 #include "progress.hpp"
+#include "stop_signals.hpp"
 
 namespace arnoldweb::cli {
 namespace {
-
-std::atomic<bool> g_stop{false};
-extern "C" void on_sigint(int) { g_stop.store(true); }
 
 struct RunFlags {
   SceneArgs scene;
@@ -21,77 +18,63 @@ struct RunFlags {
   bool quiet = false;
 };
 
-// A panel of the scene: the scene file with the panel's overrides, then the
-// user's (so --set applies to every panel), writing into <dir>/panel-<name>.
-Plan panel_plan(const Plan& main, const Scene::Panel& panel) {
-  std::vector<std::string> sets = panel.sets;
-  sets.insert(sets.end(), main.scene.overrides.begin(), main.scene.overrides.end());
-  sets.push_back("output.dir=" + main.scene.output_dir + "/panel-" + panel.name);
-  Scene s = load_scene(main.scene.file, sets);
-  s.panels.clear();
-  return make_plan(s);
+// A progress bar per part; panels are announced.
+class PartProgress final : public JobObserver {
+ public:
+  explicit PartProgress(bool quiet) : quiet_(quiet) {}
+  Progress* begin_part(const Job& job, std::size_t k) override {
+    const JobPart& part = job.parts[k];
+    if (!quiet_ && k > 0) std::cout << "\npanel        " << part.name << ": " << part.title << std::endl;
+    bar_ = std::make_unique<ConsoleProgress>(static_cast<double>(part.plan.steps_per_trajectory), quiet_);
+    return bar_.get();
+  }
+
+ private:
+  bool quiet_;
+  std::unique_ptr<ConsoleProgress> bar_;
+};
+
+void report(const JobPart& part, const Result& result) {
+  std::cout << (part.name.empty() ? "done         " : "done panel   ") << result.completed << " trajectories in "
+            << short_number(result.wall_seconds) << " s (" << short_number(result.rate()) << " trajectory-steps/s)\n"
+            << "binned       " << result.binned << ", flagged " << result.flagged() << " (non-finite "
+            << result.flagged_nonfinite << ", energy " << result.flagged_energy << ", initial "
+            << result.flagged_initial << ")" << (result.left_region ? ", left the region " + std::to_string(result.left_region) : "")
+            << "\n";
+  if (result.energy.tracked)
+    std::cout << "energy error max " << short_number(result.energy.max) << ", mean " << short_number(result.energy.mean)
+              << "\n";
+  std::cout << "map digest   " << digest_map(result) << "\n";
 }
 
 int run_scene(const RunFlags& f) {
-  const Plan plan = make_plan(load_scene_args(f.scene));
-  std::vector<Plan> panel_plans;  // planned up front: a bad panel fails before any work
-  for (const auto& panel : plan.scene.panels) panel_plans.push_back(panel_plan(plan, panel));
-  check_output_dir(plan.scene.output_dir, f.force);  // before any work
-  auto backend = open_backend(plan.scene.device);
+  // everything is checked before any work: scene, panels, output place
+  const PreparedJob prepared = prepare_job(f.scene, f.force);
+  const Job& job = prepared.job;
+  auto backend = open_backend(job.main().scene.device);
   if (!f.quiet) {
-    print_plan(std::cout, plan, backend->info().id + " (" + backend->info().name + ")");
+    print_plan(std::cout, job.main(), backend->info().id + " (" + backend->info().name + ")");
     std::cout.flush();
   }
-  ConsoleProgress progress(static_cast<double>(plan.steps_per_trajectory), f.quiet);
+  StopSignals signals;  // held until the outputs are written
   RunOptions options;
-  options.progress = &progress;
-  options.stop = &g_stop;
-  std::signal(SIGINT, on_sigint);
-  const Result result = run(plan, *backend, options);
-  std::signal(SIGINT, SIG_DFL);
-  const auto files = write_outputs(plan, result, plan.scene.output_dir, f.force);
+  options.stop = &signals.flag();
+  PartProgress progress(f.quiet);
+  const JobResult result = run_job(job, *backend, options, &progress);
+  const auto files = write_job(job, result, prepared.output);
   if (!f.quiet) {
-    std::cout << "done         " << result.completed << " trajectories in " << short_number(result.wall_seconds)
-              << " s (" << short_number(result.rate()) << " trajectory-steps/s)\n"
-              << "binned       " << result.binned << ", flagged " << result.flagged() << " (non-finite "
-              << result.flagged_nonfinite << ", energy " << result.flagged_energy << ", initial "
-              << result.flagged_initial << ")\n";
-    if (result.energy.tracked)
-      std::cout << "energy error max " << short_number(result.energy.max) << ", mean "
-                << short_number(result.energy.mean) << "\n";
-    std::cout << "map digest   " << digest_map(result) << "\n";
+    for (std::size_t k = 0; k < result.results.size(); ++k) report(job.parts[k], result.results[k]);
     for (const auto& file : files) std::cout << "wrote        " << file << "\n";
   }
-  if (result.interrupted) {
-    std::cerr << "arnoldweb: interrupted after " << result.completed << " of " << result.trajectories
-              << " trajectories; the partial result was written\n";
-    return 130;
-  }
-
-  // the panels, then the figure that shows them together
-  std::vector<Result> panel_results;
-  for (std::size_t k = 0; k < panel_plans.size(); ++k) {
-    const Plan& pp = panel_plans[k];
-    if (!f.quiet) std::cout << "\npanel        " << plan.scene.panels[k].name << ": " << plan.scene.panels[k].title << "\n";
-    ConsoleProgress panel_progress(static_cast<double>(pp.steps_per_trajectory), f.quiet);
-    options.progress = &panel_progress;
-    std::signal(SIGINT, on_sigint);
-    panel_results.push_back(run(pp, *backend, options));
-    std::signal(SIGINT, SIG_DFL);
-    const Result& pr = panel_results.back();
-    for (const auto& file : write_outputs(pp, pr, pp.scene.output_dir, false))
-      if (!f.quiet) std::cout << "wrote        " << file << "\n";
-    if (pr.interrupted) {
-      std::cerr << "arnoldweb: interrupted in panel " << plan.scene.panels[k].name << "; what was computed was written\n";
-      return 130;
-    }
-  }
-  if (!panel_plans.empty()) {
-    std::vector<FigurePanel> panels;
-    for (std::size_t k = 0; k < panel_plans.size(); ++k)
-      panels.push_back({plan.scene.panels[k].name, plan.scene.panels[k].title, &panel_plans[k], &panel_results[k]});
-    const std::string figure = write_figure(plan.scene.output_dir, plan, result, panels);
-    if (!figure.empty() && !f.quiet) std::cout << "wrote        " << figure << "\n";
+  if (signals.signal()) {
+    const Result& last = result.results.empty() ? Result{} : result.results.back();
+    std::cerr << "arnoldweb: stopped by " << signals.name() << " after " << last.completed << " of "
+              << last.trajectories << " trajectories"
+              << (result.results.size() < job.parts.size() ? " (panels not run: " +
+                                                                 std::to_string(job.parts.size() - result.results.size()) + ")"
+                                                           : "")
+              << "; what was computed was written to " << prepared.out_dir << "\n";
+    return signals.exit_code();
   }
   return 0;
 }
@@ -102,7 +85,8 @@ void add_run_command(CLI::App& app, Action& action) {
   auto flags = std::make_shared<RunFlags>();
   auto* c = app.add_subcommand("run", "Run a scene and write its outputs (summary.json, map.h5, pictures)");
   add_scene_options(c, flags->scene);
-  c->add_flag("--force,-f", flags->force, "Replace an existing output directory");
+  c->add_flag("--force,-f", flags->force,
+              "Replace an existing output directory, if a run of arnoldweb wrote it and nothing else is inside");
   c->add_flag("--quiet,-q", flags->quiet, "Print nothing but errors");
   c->callback([&action, flags] { action = [flags] { return run_scene(*flags); }; });
 }

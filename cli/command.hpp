@@ -9,6 +9,10 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+
+#include "arnoldweb/job.hpp"
+#include "arnoldweb/output.hpp"
 #include "arnoldweb/scene.hpp"
 
 namespace arnoldweb::cli {
@@ -20,13 +24,25 @@ using Action = std::function<int()>;
 // Options shared by the commands that take a scene.
 struct SceneArgs {
   std::string scene;
-  std::string device;  // empty: the scene's run.device
-  std::string out;     // empty: the scene's output.dir
+  std::optional<std::string> device;  // absent: the scene's run.device
+  std::optional<std::string> out;     // absent: the scene's output.dir
   std::vector<std::string> sets;
 };
 void add_scene_options(CLI::App* command, SceneArgs& args);
-// Read the scene with --set, --out and --device applied.
+// Read the scene with --set, --out and --device applied (errors name the
+// option the user typed).
 Scene load_scene_args(const SceneArgs& args);
+
+// What `check` and `run` both validate before anything is computed: the
+// scene, every panel, and the output directory (made-writable probe, free
+// space for the estimated outputs, the --force rules). One path, so the two
+// commands agree.
+struct PreparedJob {
+  Job job;
+  OutputOptions output;
+  std::string out_dir;  // normalised
+};
+PreparedJob prepare_job(const SceneArgs& args, bool force);
 
 void add_devices_command(CLI::App& app, Action& action);
 void add_methods_command(CLI::App& app, Action& action);

@@ -1,3 +1,4 @@
+#include "arnoldweb/errors.hpp"
 #include "command.hpp"
 
 namespace arnoldweb::cli {
@@ -11,10 +12,27 @@ void add_scene_options(CLI::App* c, SceneArgs& a) {
 }
 
 Scene load_scene_args(const SceneArgs& a) {
-  std::vector<std::string> sets = a.sets;
-  if (!a.out.empty()) sets.push_back("output.dir=" + a.out);
-  if (!a.device.empty()) sets.push_back("run.device=" + a.device);
-  return load_scene(a.scene, sets);
+  std::vector<std::string> sets = a.sets, labels(a.sets.size());
+  if (a.out) {
+    if (a.out->empty()) throw OutputRefused("", "--out was given an empty directory name");
+    sets.push_back("output.dir=" + *a.out);
+    labels.push_back("--out " + *a.out);
+  }
+  if (a.device) {
+    sets.push_back("run.device=" + *a.device);
+    labels.push_back("--device " + *a.device);
+  }
+  return load_scene(a.scene, sets, labels);
+}
+
+PreparedJob prepare_job(const SceneArgs& args, bool force) {
+  PreparedJob p;
+  p.job = plan_job(load_scene_args(args));
+  p.output.force = force;
+  p.output.scene_file = args.scene;
+  p.output.expected_bytes = estimate_output_bytes(p.job);
+  p.out_dir = check_output_dir(p.job.main().scene.output_dir, p.output);
+  return p;
 }
 
 }  // namespace arnoldweb::cli

@@ -1,6 +1,13 @@
 #include "support.hpp"
 
+#include <poll.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <sstream>
 
 #include <array>
 #include <cstdio>
@@ -9,6 +16,8 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+
+extern char** environ;
 
 namespace awtest {
 
@@ -50,17 +59,91 @@ std::string temp_dir(const std::string& tag) {
   return p.string();
 }
 
+StartedCli start_cli(const std::vector<std::string>& args, const CliOptions& o) {
+  StartedCli c;
+  int fds[2];
+  if (pipe(fds) != 0) return c;
+  // ARNOLDWEB_TEST_CLI runs the CLI tests against another build (e.g. an older
+  // one, to see a regression test fail there)
+  const char* other = std::getenv("ARNOLDWEB_TEST_CLI");
+  std::vector<std::string> argv_s = {other && *other ? other : ARNOLDWEB_CLI};
+  argv_s.insert(argv_s.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : argv_s) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::vector<std::string> env_s;  // ours, then the options' (which replace ours of the same name)
+  auto name_of = [](const std::string& e) { return e.substr(0, e.find('=')); };
+  for (char** e = environ; *e; ++e) {
+    bool replaced = false;
+    for (const auto& x : o.env) replaced |= name_of(x) == name_of(*e);
+    if (!replaced) env_s.emplace_back(*e);
+  }
+  env_s.insert(env_s.end(), o.env.begin(), o.env.end());
+  std::vector<char*> envp;
+  for (auto& e : env_s) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    dup2(fds[1], 1);
+    dup2(fds[1], 2);
+    close(fds[0]);
+    close(fds[1]);
+    if (!o.cwd.empty() && chdir(o.cwd.c_str()) != 0) _exit(126);
+    if (o.file_size_limit > 0) {
+      std::signal(SIGXFSZ, SIG_IGN);
+      rlimit lim{static_cast<rlim_t>(o.file_size_limit), static_cast<rlim_t>(o.file_size_limit)};
+      setrlimit(RLIMIT_FSIZE, &lim);
+    }
+    execve(argv[0], argv.data(), envp.data());
+    _exit(127);
+  }
+  close(fds[1]);
+  c.pid = pid;
+  c.fd = fds[0];
+  return c;
+}
+
+bool StartedCli::wait_for(const std::string& text, double seconds) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (output.find(text) == std::string::npos) {
+    const double left = std::chrono::duration<double>(end - std::chrono::steady_clock::now()).count();
+    if (left <= 0) return false;
+    pollfd p{fd, POLLIN, 0};
+    if (poll(&p, 1, static_cast<int>(left * 1000) + 1) <= 0) continue;
+    char buf[4096];
+    const ssize_t n = read(fd, buf, sizeof buf);
+    if (n <= 0) return output.find(text) != std::string::npos;
+    output.append(buf, static_cast<std::size_t>(n));
+  }
+  return true;
+}
+
+int StartedCli::finish() {
+  char buf[4096];
+  ssize_t n;
+  while ((n = read(fd, buf, sizeof buf)) > 0) output.append(buf, static_cast<std::size_t>(n));
+  close(fd);
+  fd = -1;
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0) return -1;
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
+  return -1;
+}
+
+int run_cli(const std::vector<std::string>& args, std::string* out, const CliOptions& options) {
+  StartedCli c = start_cli(args, options);
+  if (c.pid < 0) return -1;
+  const int rc = c.finish();
+  if (out) *out = c.output;
+  return rc >= 128 ? -1 : rc;
+}
+
 int run_cli(const std::string& args, std::string* out) {
-  const std::string cmd = std::string(ARNOLDWEB_CLI) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return -1;
-  std::string text;
-  std::array<char, 4096> buf;
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) text.append(buf.data(), n);
-  const int status = pclose(pipe);
-  if (out) *out = text;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::vector<std::string> v;
+  std::istringstream in(args);
+  for (std::string a; in >> a;) v.push_back(a);
+  return run_cli(v, out);
 }
 
 bool long_tests_enabled() {

@@ -32,8 +32,31 @@ long first_difference(const std::vector<T>& a, const std::vector<T>& b) {
 // A fresh empty temporary directory (removed at exit).
 std::string temp_dir(const std::string& tag);
 
-// Run the arnoldweb CLI with arguments; returns the exit code, output in *out.
+// How to start the arnoldweb CLI in a test (no shell is involved: the
+// arguments reach the program exactly as given).
+struct CliOptions {
+  std::vector<std::string> env;  // extra NAME=value entries
+  std::string cwd;               // working directory ("" = this one)
+  long long file_size_limit = 0; // RLIMIT_FSIZE in bytes (writes beyond fail like a full disk), 0 = none
+};
+
+// Run the arnoldweb CLI with arguments; returns the exit code (-1 if it did
+// not exit normally), stdout and stderr together in *out.
+int run_cli(const std::vector<std::string>& args, std::string* out = nullptr, const CliOptions& options = {});
+// The same with the arguments split at spaces (for arguments without spaces).
 int run_cli(const std::string& args, std::string* out = nullptr);
+
+// A CLI started in the background (for signals): its pid and its output.
+struct StartedCli {
+  int pid = -1;
+  int fd = -1;         // read end of its stdout+stderr
+  std::string output;  // what has been read so far
+  // Reads until `text` appears in the output or `seconds` pass; true if it appeared.
+  bool wait_for(const std::string& text, double seconds);
+  // Waits for the exit; returns the exit code, or 128 + signal if killed.
+  int finish();
+};
+StartedCli start_cli(const std::vector<std::string>& args, const CliOptions& options = {});
 
 // Long tests (doctest suite "hard-long", ctest hard.long) run only where the
 // environment variable ARNOLDWEB_LONG_TESTS=1 is set (bench/gpu/run.sh sets

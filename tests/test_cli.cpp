@@ -107,19 +107,21 @@ TEST_SUITE("cli") {
     CHECK(awtest::run_cli("run " + dir + "/scene.toml --quiet --device cpu --out " + dir + "/out", &out) == 3);
     CHECK(contains(out, "exists; use --force"));
     CHECK(fs::exists(dir + "/out/mine.txt"));
-    CHECK(awtest::run_cli("run " + dir + "/scene.toml --quiet --device cpu --force --out " + dir + "/out", &out) == 0);
-    CHECK(fs::exists(dir + "/out/summary.json"));
+    // --force replaces only what arnoldweb wrote: this directory is the user's
+    CHECK(awtest::run_cli("run " + dir + "/scene.toml --quiet --device cpu --force --out " + dir + "/out", &out) == 2);
+    CHECK(contains(out, "refusing to replace it"));
+    CHECK(fs::exists(dir + "/out/mine.txt"));
+    CHECK_FALSE(fs::exists(dir + "/out/summary.json"));
   }
 
   TEST_CASE("without any OpenCL platform: devices says how to install PoCL; opencl runs fail cleanly") {
     const std::string empty = awtest::temp_dir("icd");
     std::string out;
     CHECK(awtest::run_cli("devices", &out) == 0);
-    const std::string env = "OCL_ICD_VENDORS=" + empty + " ";
-    const int rc = std::system((env + ARNOLDWEB_CLI + " devices > " + empty + "/devices.txt 2>&1").c_str());
-    CHECK(WEXITSTATUS(rc) == 0);
-    std::ifstream f(empty + "/devices.txt");
-    const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    awtest::CliOptions no_icd;
+    no_icd.env = {"OCL_ICD_VENDORS=" + empty};
+    std::string text;
+    CHECK(awtest::run_cli({"devices"}, &text, no_icd) == 0);
     CAPTURE(text);
     if (contains(text, "opencl:0")) {
       // some ICD loaders (Ubuntu 24.04's) still find platforms registered elsewhere
@@ -131,12 +133,9 @@ TEST_SUITE("cli") {
     CHECK(contains(text, "pocl-opencl-icd"));
     CHECK(contains(text, "cpu"));
     std::ofstream(empty + "/scene.toml") << kGood;
-    const int rc2 = std::system((env + ARNOLDWEB_CLI + " run " + empty + "/scene.toml --quiet --device opencl:0 --out " +
-                                 empty + "/out > " + empty + "/run.txt 2>&1")
-                                    .c_str());
-    CHECK(WEXITSTATUS(rc2) == 4);
-    std::ifstream g(empty + "/run.txt");
-    const std::string run_text((std::istreambuf_iterator<char>(g)), std::istreambuf_iterator<char>());
+    std::string run_text;
+    CHECK(awtest::run_cli({"run", empty + "/scene.toml", "--quiet", "--device", "opencl:0", "--out", empty + "/out"},
+                          &run_text, no_icd) == 4);
     CHECK(contains(run_text, "pocl-opencl-icd"));
     CHECK_FALSE(fs::exists(empty + "/out"));
   }
@@ -168,12 +167,11 @@ TEST_SUITE("cli") {
     }
     const std::string dir = awtest::temp_dir("cli");
     std::ofstream(dir + "/scene.toml") << kGood;
-    const std::string cmd = "ARNOLDWEB_OPENCL_OPTIONS='-DAW_STAGES=oops' " + std::string(ARNOLDWEB_CLI) + " run " + dir +
-                            "/scene.toml --quiet --device opencl:0 --out " + dir + "/out > " + dir + "/log.txt 2>&1";
-    const int rc = std::system(cmd.c_str());
-    CHECK(WEXITSTATUS(rc) == 4);
-    std::ifstream f(dir + "/log.txt");
-    const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    awtest::CliOptions bad_option;
+    bad_option.env = {"ARNOLDWEB_OPENCL_OPTIONS=-DAW_STAGES=oops"};
+    std::string text;
+    CHECK(awtest::run_cli({"run", dir + "/scene.toml", "--quiet", "--device", "opencl:0", "--out", dir + "/out"}, &text,
+                          bad_option) == 4);
     CAPTURE(text);
     CHECK(contains(text, "kernel build failed"));
     CHECK(contains(text, "options: -DAW_FEATURES="));

@@ -97,7 +97,7 @@ TEST_SUITE("output") {
     const Plan p = small_plan();
     const Result& r = small_result();
     const std::string dir = awtest::temp_dir("h5") + "/out";
-    const auto files = write_outputs(p, r, dir, false);
+    const auto files = write_outputs(p, r, dir, {});
     std::int64_t nside = 0;
     CHECK(read_u64(dir + "/map.h5", "map", &nside) == r.map);
     CHECK(nside == 16);
@@ -119,7 +119,7 @@ TEST_SUITE("output") {
   TEST_CASE("pictures are PNGs of the right size, not blank") {
     const Plan p = small_plan();
     const std::string dir = awtest::temp_dir("png") + "/out";
-    write_outputs(p, small_result(), dir, false);
+    write_outputs(p, small_result(), dir, {});
     for (const char* name : {"map.png", "map_mollweide.png", "map_resonances.png", "zoom.png"}) {
       CAPTURE(name);
       cairo_surface_t* s = cairo_image_surface_create_from_png((dir + "/" + name).c_str());
@@ -140,7 +140,7 @@ TEST_SUITE("output") {
   TEST_CASE("render_saved draws the pictures of a saved run from summary.json and map.h5") {
     const Plan p = small_plan();
     const std::string dir = awtest::temp_dir("saved") + "/out";
-    write_outputs(p, small_result(), dir, false);
+    write_outputs(p, small_result(), dir, {});
     for (const char* name : {"map.png", "zoom.png"}) fs::remove(dir + "/" + name);
     const auto files = render_saved(dir);
     CHECK(fs::exists(dir + "/map.png"));
@@ -150,17 +150,34 @@ TEST_SUITE("output") {
   }
 #endif
 
-  TEST_CASE("an existing output directory is refused without force and replaced with it") {
+  TEST_CASE("an existing output directory is refused without force; with it only arnoldweb's own is replaced") {
     const Plan p = small_plan();
+    OutputOptions force;
+    force.force = true;
     const std::string dir = awtest::temp_dir("exists") + "/out";
     fs::create_directories(dir);
     std::ofstream(dir + "/keep.txt") << "old";
-    CHECK_THROWS_AS(write_outputs(p, small_result(), dir, false), OutputError);
+    CHECK_THROWS_AS(write_outputs(p, small_result(), dir, {}), OutputError);
+    // a directory that arnoldweb did not write is never replaced (exit 2)
+    CHECK_THROWS_WITH_AS(write_outputs(p, small_result(), dir, force), doctest::Contains("written by arnoldweb"),
+                         OutputRefused);
     CHECK(fs::exists(dir + "/keep.txt"));
     CHECK_FALSE(fs::exists(dir + "/summary.json"));
-    write_outputs(p, small_result(), dir, true);
-    CHECK(fs::exists(dir + "/summary.json"));
-    CHECK_FALSE(fs::exists(dir + "/keep.txt"));
+    // an earlier run's directory is replaced
+    const std::string ours = awtest::temp_dir("exists") + "/ours";
+    write_outputs(p, small_result(), ours, {});
+    const auto listed = nlohmann::json::parse(std::ifstream(ours + "/summary.json"))["files"];
+    CHECK(listed.size() >= 2);
+    for (const auto& f : listed) CHECK(fs::exists(ours + "/" + f.get<std::string>()));
+    std::ofstream(ours + "/map.png") << "an older picture";
+    write_outputs(p, small_result(), ours, force);
+    CHECK(fs::file_size(ours + "/map.png") > 100);
+    // ... but not after the user put a file of their own into it
+    std::ofstream(ours + "/notes.txt") << "mine";
+    CHECK_THROWS_WITH_AS(write_outputs(p, small_result(), ours, force), doctest::Contains("notes.txt"),
+                         OutputRefused);
+    CHECK(fs::exists(ours + "/notes.txt"));
+    CHECK(fs::exists(ours + "/summary.json"));
   }
 
   TEST_CASE("a write that fails (full disk) leaves no partial file and keeps what was complete") {
@@ -169,7 +186,7 @@ TEST_SUITE("output") {
     const Result r = awtest::run_on("cpu", p);
     // the limit lies between the sizes of summary.json and map.h5
     const std::string probe = awtest::temp_dir("probe") + "/out";
-    write_outputs(p, r, probe, false);
+    write_outputs(p, r, probe, {});
     const auto summary_size = fs::file_size(probe + "/summary.json");
     const auto map_size = fs::file_size(probe + "/map.h5");
     REQUIRE(map_size > summary_size + 1024);
@@ -182,7 +199,7 @@ TEST_SUITE("output") {
       rlimit lim{limit, limit};
       setrlimit(RLIMIT_FSIZE, &lim);
       try {
-        write_outputs(p, r, dir, false);
+        write_outputs(p, r, dir, {});
       } catch (const OutputError&) {
         _exit(3);
       }
@@ -192,9 +209,12 @@ TEST_SUITE("output") {
     waitpid(child, &status, 0);
     REQUIRE(WIFEXITED(status));
     CHECK(WEXITSTATUS(status) == 3);
-    CHECK(fs::exists(dir + "/summary.json"));  // complete, kept
-    CHECK_FALSE(fs::exists(dir + "/map.h5"));  // failed: no partial file
-    CHECK_FALSE(has_temporaries(fs::path(dir)));
+    // nothing half-written in place; what was complete is kept under a name of its own
+    CHECK_FALSE(fs::exists(dir));
+    const std::string kept = dir + ".incomplete-" + std::to_string(child);
+    CHECK(fs::exists(kept + "/summary.json"));
+    CHECK_FALSE(fs::exists(kept + "/map.h5"));  // failed: no partial file
+    CHECK_FALSE(has_temporaries(fs::path(kept)));
     for (const auto& e : fs::directory_iterator(fs::path(dir).parent_path()))
       CHECK(e.path().filename().string().find(".partial-") == std::string::npos);
   }
@@ -202,11 +222,11 @@ TEST_SUITE("output") {
   TEST_CASE("missing parent directories are made; an impossible place is refused before any work") {
     const std::string file = awtest::temp_dir("parents") + "/a-file";
     std::ofstream(file) << "not a directory";
-    CHECK_THROWS_WITH_AS(check_output_dir(file + "/x/out", false), doctest::Contains("is not a directory"), OutputError);
+    CHECK_THROWS_WITH_AS(check_output_dir(file + "/x/out", {}), doctest::Contains("is not a directory"), OutputError);
     const std::string dir = awtest::temp_dir("parents") + "/a/b/out";
-    CHECK_NOTHROW(check_output_dir(dir, false));
+    CHECK_NOTHROW(check_output_dir(dir, {}));
     CHECK_FALSE(fs::exists(fs::path(dir).parent_path()));  // nothing made before the run
-    write_outputs(small_plan(), small_result(), dir, false);
+    write_outputs(small_plan(), small_result(), dir, {});
     CHECK(fs::exists(dir + "/summary.json"));
   }
 }

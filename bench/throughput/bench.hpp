@@ -36,7 +36,7 @@ struct Options {
   double energy = 15.0;
   double step = 0.01;                        // T
   std::string out_dir = "bench-out";
-  bool plot = true;                          // run the plot script if python3 is there
+  bool plot = true;                          // print the command that draws the plot
   std::string preset;                        // "ci", "dev", "gpu" (sets the sizes)
   std::string scene;                         // time this scene end to end on each device
   std::vector<std::string> scene_sets;       // --set overrides for it

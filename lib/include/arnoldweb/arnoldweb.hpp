@@ -5,6 +5,7 @@
 #include "arnoldweb/analysis.hpp"
 #include "arnoldweb/device.hpp"
 #include "arnoldweb/errors.hpp"
+#include "arnoldweb/job.hpp"
 #include "arnoldweb/methods.hpp"
 #include "arnoldweb/output.hpp"
 #include "arnoldweb/plan.hpp"

@@ -70,6 +70,15 @@ class OutputError : public Error {
   std::string path_;
 };
 
+// An output place that arnoldweb refuses to use whatever the options: it
+// would replace something arnoldweb did not write (the current directory, a
+// directory holding the scene or files of the user). Bad input: exit code 2.
+class OutputRefused : public OutputError {
+ public:
+  using OutputError::OutputError;
+  int exit_code() const noexcept override { return 2; }
+};
+
 // The user interrupted a run (SIGINT); what was computed has been written.
 class Interrupted : public Error {
  public:

@@ -11,20 +11,49 @@
 
 namespace arnoldweb {
 
-// Write summary.json, map.h5, states.h5 (if states were asked for), map.png and
-// map_mollweide.png (if scene.output images) into `dir`.
-// An existing `dir` is refused (OutputError) unless `force`. The files are
-// produced in a staging directory beside `dir` and moved into place at the
-// end; if a write fails, the files already complete are still moved into
-// place and OutputError names the one that failed. Returns the paths written.
-std::vector<std::string> write_outputs(const Plan& plan, const Result& result,
-                                       const std::string& dir, bool force);
+struct Job;
+struct JobResult;
 
-// Throws OutputError if `dir` exists and !force, or its parent is not writable.
-void check_output_dir(const std::string& dir, bool force);
+// How an output directory may be used.
+struct OutputOptions {
+  // Replace an existing directory, but only one that a run of arnoldweb wrote
+  // (its summary.json lists every file in it and nothing else is inside).
+  bool force = false;
+  // The scene's file: a directory holding it is never replaced.
+  std::string scene_file;
+  // Refuse before computing when the file system has less free than this.
+  std::uint64_t expected_bytes = 0;
+};
 
-// The summary as JSON text.
-std::string summary_json(const Plan& plan, const Result& result);
+// Checks, before anything is computed, that `dir` can receive a job's
+// outputs: the name is normalised (trailing slashes, "." and ".."); an existing
+// directory is refused without force (OutputError, exit 3) and refused always
+// (OutputRefused, exit 2) if arnoldweb did not write it or it is the current
+// directory, a parent of it or of the scene file, / or $HOME; the place is
+// made writable-checked with a probe that is created and removed; the free
+// space is compared with options.expected_bytes. Staging directories left by
+// dead processes beside it are removed. Returns the normalised name.
+std::string check_output_dir(const std::string& dir, const OutputOptions& options);
+
+// An upper estimate of the bytes a job writes (data and pictures).
+std::uint64_t estimate_output_bytes(const Job& job);
+
+// Writes a job's outputs into its main scene's output.dir: summary.json,
+// map.h5, states.h5 (if states were asked for), pictures, panel-<name>/ for
+// every panel that ran and figure.png. The files are produced in a staging
+// directory beside it and moved into place at the end; summary.json, written
+// last, lists every file ("files"). If a write fails (full disk), the
+// directory in place is left as it was, what was written is kept under a name
+// the error gives, and OutputError says which file failed and why. Returns
+// the paths written.
+std::vector<std::string> write_job(const Job& job, const JobResult& result, const OutputOptions& options);
+
+// One run's outputs (a job of one part).
+std::vector<std::string> write_outputs(const Plan& plan, const Result& result, const std::string& dir,
+                                       const OutputOptions& options);
+
+// The summary as JSON text; `files` lists the files of its directory.
+std::string summary_json(const Plan& plan, const Result& result, const std::vector<std::string>& files = {});
 
 // Individual writers (each atomic).
 void write_text_file(const std::string& path, const std::string& text);
@@ -58,7 +87,7 @@ void render_figure_png(const std::string& path, const Plan& plan, const Result& 
                        const std::vector<FigurePanel>& panels, const RenderOptions& options);
 
 // Writes figure.png for a run and its panels into `dir` (nothing if the build
-// has no pictures); returns the path written, or "".
+// has no pictures or the scene none); returns the path written, or "".
 std::string write_figure(const std::string& dir, const Plan& plan, const Result& result,
                          const std::vector<FigurePanel>& panels);
 

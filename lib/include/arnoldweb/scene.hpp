@@ -94,8 +94,12 @@ struct Scene {
 
   // Provenance
   std::string file;                        // path it was read from ("<string>" if none)
+  std::string text;                        // the TOML text it was read from (panels re-read it)
   std::map<std::string, SourcePos> where;  // dotted key -> position in the file
   std::vector<std::string> overrides;      // --set key=value, in order
+  // How each override was given, for messages ("--out res", "--device gpu");
+  // "" (or missing): "--set key=value".
+  std::vector<std::string> override_labels;
 
   // The scene as run, as TOML (every key, defaults included).
   std::string to_toml() const;
@@ -108,11 +112,15 @@ struct Scene {
 
 // Read and validate a scene file; apply `overrides` ("key=value", value in TOML
 // syntax or a bare string) on top. Throws SceneError.
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+// `labels` (parallel to overrides, optional) say how each was given, for
+// messages: e.g. "--out res" for the override "output.dir=res".
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {},
+                 const std::vector<std::string>& labels = {});
 
 // The same from text (file is the name used in messages).
 Scene parse_scene(const std::string& text, const std::string& file,
-                  const std::vector<std::string>& overrides = {});
+                  const std::vector<std::string>& overrides = {},
+                  const std::vector<std::string>& labels = {});
 
 // All keys a scene may contain, with their type and allowed values, for docs
 // and `arnoldweb check`.

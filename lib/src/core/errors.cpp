@@ -36,6 +36,6 @@ BuildError::BuildError(std::string device, std::string options, std::string log)
       log_(std::move(log)) {}
 
 OutputError::OutputError(std::string path, std::string message)
-    : Error(path + ": " + message), path_(std::move(path)) {}
+    : Error((path.empty() ? std::string() : path + ": ") + message), path_(std::move(path)) {}
 
 }  // namespace arnoldweb

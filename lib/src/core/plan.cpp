@@ -25,6 +25,9 @@ constexpr double kTwoPi = 6.283185307179586476925;
 constexpr double kMinAccessible = 0.001;
 constexpr double kAttemptsTimesFraction = 30.0;
 constexpr std::uint64_t kMaxStateRecords = 50'000'000;
+// A trajectory has at most this many steps (10^15: years of device time for
+// one trajectory; every count derived from it fits 64 bits and exact doubles).
+constexpr double kMaxStepsPerTrajectory = 1e15;
 
 std::string fmt(double v) {
   char buf[64];
@@ -62,6 +65,7 @@ namespace detail {
 
 std::int64_t exact_ratio(double x, double unit) {
   const double r = x / unit;
+  if (!(r < 9.0e15)) return 0;  // beyond exact integers in a double (and NaN)
   const double n = std::nearbyint(r);
   if (n < 1 || std::fabs(r - n) > 1e-9 * n) return 0;
   return static_cast<std::int64_t>(n);
@@ -183,6 +187,19 @@ Plan make_plan(const Scene& scene) {
     return make_plan(scene, *cpu);
   }
   p.step = scene.step;
+  // Counts derived from the user's numbers stay far inside 64-bit integers
+  // (and inside exact doubles): every count is checked before it is made.
+  const double steps_wanted = scene.duration / p.step;
+  if (!(steps_wanted <= kMaxStepsPerTrajectory)) {
+    // blame the key given last (an override of the step, or of the duration)
+    const bool step_last = scene.pos("integrator.step").set_index > scene.pos("run.duration").set_index;
+    fail(scene, step_last ? "integrator.step" : "run.duration",
+         "run.duration / integrator.step = " + fmt(scene.duration) + " T / " + fmt(p.step) + " T = " +
+             fmt(steps_wanted) + " steps per trajectory; at most " + fmt(kMaxStepsPerTrajectory) +
+             " are allowed: the largest run.duration with this step is " +
+             fmt(kMaxStepsPerTrajectory * p.step) + " T, the smallest integrator.step for this duration " +
+             fmt(scene.duration / kMaxStepsPerTrajectory) + " T");
+  }
   const std::int64_t per_window = exact_ratio(scene.average, p.step);
   if (per_window == 0)
     fail(scene, "run.average",

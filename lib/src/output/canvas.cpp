@@ -130,11 +130,18 @@ void Canvas::text(double x, double y, const std::string& s, double size, double 
 }
 
 void Canvas::save(const std::string& path) {
-  write_atomically(path, [&](const std::string& tmp) {
-    const cairo_status_t st = cairo_surface_write_to_png(surface_, tmp.c_str());
-    if (st != CAIRO_STATUS_SUCCESS)
-      throw OutputError(path, std::string("cannot write the PNG: ") + cairo_status_to_string(st));
-  });
+  // encoded in memory, then written with every write checked (full disk)
+  std::string png;
+  const cairo_status_t st = cairo_surface_write_to_png_stream(
+      surface_,
+      [](void* closure, const unsigned char* data, unsigned int length) {
+        static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+        return CAIRO_STATUS_SUCCESS;
+      },
+      &png);
+  if (st != CAIRO_STATUS_SUCCESS)
+    throw OutputError(path, std::string("cannot encode the PNG: ") + cairo_status_to_string(st));
+  write_file_atomically(path, png);
 }
 
 }  // namespace arnoldweb::detail

@@ -16,13 +16,18 @@
 namespace arnoldweb {
 namespace {
 
-// One HDF5 file being written; any failing call throws OutputError naming the
-// final path. Handles are closed in reverse order, quietly, on unwinding.
+// One HDF5 file being built in memory (the core driver, no backing store);
+// any failing call throws OutputError naming the final path. finish() returns
+// the file's bytes, which the caller writes with every write checked: HDF5
+// itself never touches the disk, so a full disk cannot leave it in a broken
+// state. Handles are closed in reverse order, quietly, on unwinding.
 class H5Writer {
  public:
-  H5Writer(const std::string& tmp, const std::string& path) : path_(path) {
+  explicit H5Writer(const std::string& path) : path_(path) {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions, not prints
-    file_ = check(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "create the file");
+    hid_t fapl = keep(check(H5Pcreate(H5P_FILE_ACCESS), "file access properties"));
+    check(H5Pset_fapl_core(fapl, 1 << 20, 0), "the in-memory driver");
+    file_ = check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), "create the file");
   }
   ~H5Writer() {
     for (auto it = open_.rbegin(); it != open_.rend(); ++it) close_any(*it);
@@ -69,12 +74,18 @@ class H5Writer {
     check(H5Awrite(a, H5T_NATIVE_DOUBLE, v.data()), name);
   }
 
-  void finish() {
+  // Closes every object and returns the complete file.
+  std::string finish() {
     for (auto it = open_.rbegin(); it != open_.rend(); ++it) close_any(*it);
     open_.clear();
+    check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush");
+    const ssize_t size = check(H5Fget_file_image(file_, nullptr, 0), "the file image");
+    std::string bytes(static_cast<std::size_t>(size), '\0');
+    check(H5Fget_file_image(file_, bytes.data(), bytes.size()), "the file image");
     const herr_t rc = H5Fclose(file_);
     file_ = -1;
-    if (rc < 0) throw OutputError(path_, "HDF5 could not complete the file (disk full?)");
+    if (rc < 0) throw OutputError(path_, "HDF5 could not complete the file");
+    return bytes;
   }
 
  private:
@@ -135,8 +146,8 @@ void common_attributes(H5Writer& h, hid_t where, const Plan& plan, const Result&
 }  // namespace
 
 void write_map_hdf5(const std::string& path, const Plan& plan, const Result& r) {
-  detail::write_atomically(path, [&](const std::string& tmp) {
-    H5Writer h(tmp, path);
+  H5Writer h(path);
+  {
     common_attributes(h, h.root(), plan, r);
     const hsize_t npix = r.map.size();
     hid_t map = h.dataset(h.root(), "map", H5T_NATIVE_UINT64, {npix}, r.map.data());
@@ -164,13 +175,13 @@ void write_map_hdf5(const std::string& path, const Plan& plan, const Result& r) 
              std::string("gnomonic about the centre: column x (east), row y (north), tangent-plane "
                          "coordinates from -tan(width/2) to tan(width/2)"));
     }
-    h.finish();
-  });
+  }
+  detail::write_file_atomically(path, h.finish());
 }
 
 void write_states_hdf5(const std::string& path, const Plan& plan, const Result& r) {
-  detail::write_atomically(path, [&](const std::string& tmp) {
-    H5Writer h(tmp, path);
+  H5Writer h(path);
+  {
     common_attributes(h, h.root(), plan, r);
     const hsize_t n = r.completed;
     auto split = [&](const std::vector<double>& rec, int first) {
@@ -207,8 +218,8 @@ void write_states_hdf5(const std::string& path, const Plan& plan, const Result& 
       h.attr(pos, "meaning", std::string("2 pi (winding + position_turns): unwrapped, in radians"));
       h.attr(g, "digest", digest_final_states(r));
     }
-    h.finish();
-  });
+  }
+  detail::write_file_atomically(path, h.finish());
 }
 
 }  // namespace arnoldweb

@@ -1,115 +1,152 @@
-// arnoldweb: the output directory of a run. Files are produced in a staging
-// directory beside it and moved into place at the end, so an output directory
-// is either absent or complete; what was computed is never lost.
-#include <fcntl.h>
-#include <stdio.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
+// arnoldweb: writing a job's output directory (output.hpp). Everything goes
+// into a staging directory beside the final one (output_dir.hpp) and is moved
+// into place at the end: a directory is either absent or complete, and
+// summary.json, written last, lists every file in it.
 #include <filesystem>
 
 #include "arnoldweb/analysis.hpp"
 #include "arnoldweb/errors.hpp"
+#include "arnoldweb/job.hpp"
 #include "arnoldweb/output.hpp"
+#include "aw_params.h"
+#include "output/output_dir.hpp"
 #include "output/pictures.hpp"
 
 namespace arnoldweb {
 namespace fs = std::filesystem;
+namespace {
 
-void check_output_dir(const std::string& dir, bool force) {
-  if (dir.empty()) throw OutputError(dir, "no output directory given");
-  std::error_code ec;
-  const fs::path p(dir);
-  if (fs::exists(p, ec)) {
-    if (!force) throw OutputError(dir, "exists; use --force to replace it, or choose another with --out");
-    if (!fs::is_directory(p, ec)) throw OutputError(dir, "exists and is not a directory");
-  }
-  // missing parents are created when the results are written (mkdir -p); here
-  // the nearest existing ancestor must be a writable directory
-  fs::path ancestor = fs::absolute(p, ec).parent_path();
-  while (!ancestor.empty() && !fs::exists(ancestor, ec) && ancestor != ancestor.parent_path())
-    ancestor = ancestor.parent_path();
-  if (!fs::is_directory(ancestor, ec))
-    throw OutputError(dir, ancestor.string() + " is not a directory, so the output directory cannot be made");
-  if (::access(ancestor.c_str(), W_OK | X_OK) != 0)
-    throw OutputError(dir, "cannot create it: " + ancestor.string() + " is not writable (" +
-                               std::strerror(errno) + ")");
+std::string frames_spread_csv(const Plan& plan, const Result& result, double lon, double lat) {
+  const Vec3 c = direction(lon, lat);
+  std::string csv = "t_from,t_to,spread\n";
+  for (std::size_t k = 0; k < result.frames.size(); ++k)
+    csv += std::to_string(plan.scene.frame_times[k]) + "," + std::to_string(plan.scene.frame_times[k + 1]) + "," +
+           std::to_string(2 * plan.scene.energy * direction_spread(result.frames[k], plan.scene.nside, c)) + "\n";
+  return csv;
 }
 
-std::vector<std::string> write_outputs(const Plan& plan, const Result& result, const std::string& dir,
-                                       bool force) {
-  check_output_dir(dir, force);
-  const fs::path final_dir(dir);
-  const fs::path staging = final_dir.string() + ".partial-" + std::to_string(::getpid());
-  std::error_code ec;
-  if (final_dir.has_parent_path()) fs::create_directories(final_dir.parent_path(), ec);
-  fs::remove_all(staging, ec);
-  if (!fs::create_directories(staging, ec))
-    throw OutputError(staging.string(), "cannot create the staging directory: " + ec.message());
+// Writes one run's files into `dir` (summary.json excepted); appends their
+// names, relative to `dir`, to `names`. Throws OutputError at the first
+// failure (names then holds the files complete before it).
+void write_run_files(const Plan& plan, const Result& result, const fs::path& dir, std::vector<std::string>& names) {
+  auto file = [&](const std::string& name, auto&& write) {
+    write((dir / name).string());
+    names.push_back(name);
+  };
+  if (!result.map.empty() || !result.zoom.empty())
+    file("map.h5", [&](const std::string& p) { write_map_hdf5(p, plan, result); });
+  if (!result.initial_r.empty() || !result.final_r.empty())
+    file("states.h5", [&](const std::string& p) { write_states_hdf5(p, plan, result); });
+  double lon, lat;
+  if (!result.frames.empty() && detail::initial_centre(plan.scene, &lon, &lat))
+    file("frames_spread.csv",
+         [&](const std::string& p) { write_text_file(p, frames_spread_csv(plan, result, lon, lat)); });
+  if (plan.scene.images) detail::write_pictures(plan, result, dir.string(), names);
+}
 
-  std::vector<std::string> names;
+std::vector<std::string> prefixed(const std::string& sub, const std::vector<std::string>& names) {
+  std::vector<std::string> out;
+  for (const auto& n : names) out.push_back(sub.empty() ? n : sub + "/" + n);
+  return out;
+}
+
+double part_bytes(const Plan& p) {
+  const double n = static_cast<double>(p.scene.trajectories);
+  double b = 64e3;                                                  // summary.json
+  b += 8.0 * static_cast<double>(p.hist_size + (p.frames > 1 ? p.npix : 0)) + 16e3;  // map.h5
+  if (p.scene.initial_states) b += n * AW_STATE_REALS * 8;
+  if (p.scene.final_states) b += n * (AW_STATE_REALS * 8 + 3 * 8 + AW_STATE_INTS * 8);
+  if (p.scene.images) b += (p.scene.velocity_map ? 3 : 0) * 1.5e6 + (p.scene.zoom ? 1.5e6 : 0) + p.frames * 1.6e6;
+  return b;
+}
+
+}  // namespace
+
+std::uint64_t estimate_output_bytes(const Job& job) {
+  double b = job.parts.size() > 1 ? 3e6 : 0;  // figure.png
+  for (const JobPart& part : job.parts) b += part_bytes(part.plan);
+  return static_cast<std::uint64_t>(b);
+}
+
+std::vector<std::string> write_job(const Job& job, const JobResult& jr, const OutputOptions& options) {
+  const Plan& main = job.main();
+  OutputOptions o = options;
+  if (o.scene_file.empty()) o.scene_file = main.scene.file;
+  detail::Staging staging(main.scene.output_dir, o);
+  const fs::path root(staging.path());
+
+  std::vector<std::string> all;  // every file, relative to the job's directory
   std::string failure;
-  auto attempt = [&](const std::string& name, auto&& write) {
+  auto guarded = [&](auto&& step) {
     if (!failure.empty()) return;
     try {
-      write((staging / name).string());
-      names.push_back(name);
+      step();
     } catch (const Error& e) {
       failure = e.what();
     }
   };
-  attempt("summary.json", [&](const std::string& p) { write_text_file(p, summary_json(plan, result)); });
-  if (!result.map.empty() || !result.zoom.empty())
-    attempt("map.h5", [&](const std::string& p) { write_map_hdf5(p, plan, result); });
-  if (!result.initial_r.empty() || !result.final_r.empty())
-    attempt("states.h5", [&](const std::string& p) { write_states_hdf5(p, plan, result); });
-  double lon, lat;
-  if (!result.frames.empty() && detail::initial_centre(plan.scene, &lon, &lat))
-    attempt("frames_spread.csv", [&](const std::string& p) {
-      const Vec3 c = direction(lon, lat);
-      std::string csv = "t_from,t_to,spread\n";
-      for (std::size_t k = 0; k < result.frames.size(); ++k)
-        csv += std::to_string(plan.scene.frame_times[k]) + "," + std::to_string(plan.scene.frame_times[k + 1]) + "," +
-               std::to_string(2 * plan.scene.energy * direction_spread(result.frames[k], plan.scene.nside, c)) + "\n";
-      write_text_file(p, csv);
+  // the main run's files, then each panel (complete with its summary.json)
+  if (!jr.results.empty()) guarded([&] { write_run_files(main, jr.results[0], root, all); });
+  for (std::size_t k = 1; k < jr.results.size() && failure.empty(); ++k) {
+    const JobPart& part = job.parts[k];
+    const fs::path sub = root / part.subdir;
+    std::vector<std::string> names;
+    guarded([&] {
+      fs::create_directories(sub);
+      write_run_files(part.plan, jr.results[k], sub, names);
     });
-  if (plan.scene.images && failure.empty()) {
+    guarded([&] {
+      write_text_file((sub / "summary.json").string(), summary_json(part.plan, jr.results[k], names));
+      names.push_back("summary.json");
+    });
+    for (const auto& n : prefixed(part.subdir, names)) all.push_back(n);
+  }
+  // the figure of the main run and its panels, when every panel ran
+  if (job.parts.size() > 1 && jr.results.size() == job.parts.size())
+    guarded([&] {
+      std::vector<FigurePanel> panels;
+      for (std::size_t k = 1; k < job.parts.size(); ++k)
+        panels.push_back({job.parts[k].name, job.parts[k].title, &job.parts[k].plan, &jr.results[k]});
+      if (!write_figure(root.string(), main, jr.results[0], panels).empty()) all.push_back("figure.png");
+    });
+  // summary.json last: it lists everything, and marks the directory as arnoldweb's
+  const std::string summary_failure = failure;
+  if (!jr.results.empty()) {
+    std::string why;
     try {
-      for (const auto& n : detail::write_pictures(plan, result, staging.string())) names.push_back(n);
+      write_text_file((root / "summary.json").string(), summary_json(main, jr.results[0], all));
     } catch (const Error& e) {
-      failure = e.what();
+      why = e.what();
     }
+    if (failure.empty()) failure = why;
   }
-
-  if (names.empty()) {  // nothing complete: leave no directory behind
-    fs::remove_all(staging, ec);
-    throw OutputError(dir, "writing failed: " + failure);
+  if (!failure.empty()) {
+    const std::string kept = staging.keep(".incomplete-");
+    throw OutputError(staging.final_dir(), "writing failed: " + failure + "; what was written is in " + kept +
+                                               (fs::exists(staging.final_dir()) ? "; the existing directory was left as it was"
+                                                                                 : ""));
   }
-
-  // move into place; without --force never over a directory that appeared meanwhile
-  const fs::path old = final_dir.string() + ".old-" + std::to_string(::getpid());
-  const bool replacing = fs::exists(final_dir, ec);
-  if (replacing) {
-    if (!force) throw OutputError(dir, "appeared while the run was computing; the results are in " + staging.string());
-    fs::rename(final_dir, old, ec);
-    if (ec) throw OutputError(dir, "cannot move the existing directory aside: " + ec.message() +
-                                       " (the results are in " + staging.string() + ")");
-  }
-  int rc = ::renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, final_dir.c_str(), RENAME_NOREPLACE);
-  if (rc != 0 && errno == EINVAL) rc = std::rename(staging.c_str(), final_dir.c_str());  // no NOREPLACE here
-  if (rc != 0) {
-    const std::string why = std::strerror(errno);
-    if (replacing) fs::rename(old, final_dir, ec);  // put the old directory back
-    throw OutputError(dir, "cannot move the results into place: " + why + " (they are in " + staging.string() + ")");
-  }
-  fs::remove_all(old, ec);
-
+  (void)summary_failure;
+  const std::string warning = staging.commit();
   std::vector<std::string> written;
-  for (const auto& n : names) written.push_back((final_dir / n).string());
-  if (!failure.empty())
-    throw OutputError(dir, "writing stopped: " + failure + "; the files written before are in " + dir);
+  for (const auto& n : all) written.push_back((fs::path(staging.final_dir()) / n).string());
+  written.push_back((fs::path(staging.final_dir()) / "summary.json").string());
+  if (!warning.empty()) written.push_back("warning: " + warning);
   return written;
+}
+
+std::vector<std::string> write_outputs(const Plan& plan, const Result& result, const std::string& dir,
+                                       const OutputOptions& options) {
+  Job job;
+  JobPart part;
+  part.plan = plan;
+  part.plan.scene.output_dir = dir;
+  part.plan.scene.panels.clear();
+  job.parts.push_back(std::move(part));
+  JobResult jr;
+  jr.results.push_back(result);
+  jr.interrupted = result.interrupted;
+  return write_job(job, jr, options);
 }
 
 }  // namespace arnoldweb

@@ -1,16 +1,15 @@
 // arnoldweb: which pictures a run gets, and how they are titled.
 #include "output/pictures.hpp"
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/version.hpp"
+#include "os/process.hpp"
 #include "output/atomic_file.hpp"
 
 namespace arnoldweb::detail {
@@ -32,18 +31,22 @@ std::string caption_of(const Result& r) {
   return std::string("arnoldweb ") + ARNOLDWEB_VERSION + " on " + r.device.id + " (" + r.device.name + ")";
 }
 
-bool have_ffmpeg() { return std::system("command -v ffmpeg >/dev/null 2>&1") == 0; }
+bool have_ffmpeg() { return !find_program("ffmpeg").empty(); }
 
 // frames.mp4 from frames/frame_NNN.png (atomically: ffmpeg writes a temporary).
+// ffmpeg gets its arguments as a vector: no shell, so no directory name can
+// run a command.
 void make_movie(const std::string& dir) {
   const std::string tmp = dir + "/.frames.tmp-" + std::to_string(::getpid()) + ".mp4";
-  const std::string cmd = "ffmpeg -loglevel error -y -framerate 2 -i '" + dir +
-                          "/frames/frame_%03d.png' -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p '" + tmp +
-                          "' </dev/null";
-  const int rc = std::system(cmd.c_str());
-  if (rc != 0 || !std::filesystem::exists(tmp)) {
+  const ProgramRun run = run_program({"ffmpeg", "-nostdin", "-loglevel", "error", "-y", "-framerate", "2", "-i",
+                                      dir + "/frames/frame_%03d.png", "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2",
+                                      "-pix_fmt", "yuv420p", tmp});
+  if (run.exit_code != 0 || !std::filesystem::exists(tmp)) {
     std::remove(tmp.c_str());
-    throw OutputError(dir + "/frames.mp4", "ffmpeg failed (exit " + std::to_string(WEXITSTATUS(rc)) + ")");
+    std::string why = run.signal ? "killed by signal " + std::to_string(run.signal)
+                                 : "exit " + std::to_string(run.exit_code);
+    if (!run.output.empty()) why += ": " + run.output.substr(0, 400);
+    throw OutputError(dir + "/frames.mp4", "ffmpeg failed (" + why + ")");
   }
   sync_file(tmp);
   if (std::rename(tmp.c_str(), (dir + "/frames.mp4").c_str()) != 0) {
@@ -91,8 +94,7 @@ bool initial_centre(const Scene& s, double* lon, double* lat) {
 }
 
 #ifdef ARNOLDWEB_HAVE_CAIRO
-std::vector<std::string> write_pictures(const Plan& plan, const Result& r, const std::string& dir) {
-  std::vector<std::string> out;
+void write_pictures(const Plan& plan, const Result& r, const std::string& dir, std::vector<std::string>& out) {
   const RenderOptions o = picture_options(plan, r);
   if (plan.scene.velocity_map) {
     render_sphere_png(dir + "/map.png", r.map, plan.scene.nside, o);
@@ -130,10 +132,9 @@ std::vector<std::string> write_pictures(const Plan& plan, const Result& r, const
       out.push_back("frames.mp4");
     }
   }
-  return out;
 }
 #else
-std::vector<std::string> write_pictures(const Plan&, const Result&, const std::string&) { return {}; }
+void write_pictures(const Plan&, const Result&, const std::string&, std::vector<std::string>&) {}
 #endif
 
 }  // namespace arnoldweb::detail

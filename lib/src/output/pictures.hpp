@@ -11,11 +11,12 @@
 
 namespace arnoldweb::detail {
 
-// Writes the pictures the result has data for into `dir` and returns their
-// names (relative to dir): map.png, map_mollweide.png, map_resonances.png,
-// zoom.png, frames/frame_NNN.png (and frames.mp4 when ffmpeg is installed).
-// Without cairo in the build: none. Throws OutputError.
-std::vector<std::string> write_pictures(const Plan& plan, const Result& result, const std::string& dir);
+// Writes the pictures the result has data for into `dir` and appends their
+// names (relative to dir) to `names` as each is complete: map.png,
+// map_mollweide.png, map_resonances.png, zoom.png, frames/frame_NNN.png (and
+// frames.mp4 when ffmpeg is installed). Without cairo in the build: none.
+// Throws OutputError.
+void write_pictures(const Plan& plan, const Result& result, const std::string& dir, std::vector<std::string>& names);
 
 // Perceptual colour map: Green's cubehelix (Bull. Astr. Soc. India 39 (2011)
 // 289), luminance rising monotonically from black (t = 0) to white (t = 1).

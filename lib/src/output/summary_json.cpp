@@ -53,7 +53,7 @@ json scene_values(const Scene& s) {
 
 }  // namespace
 
-std::string summary_json(const Plan& plan, const Result& r) {
+std::string summary_json(const Plan& plan, const Result& r, const std::vector<std::string>& files) {
   json j;
   j["arnoldweb"] = ARNOLDWEB_VERSION;
   j["date"] = utc_now();
@@ -132,7 +132,11 @@ std::string summary_json(const Plan& plan, const Result& r) {
                       {"pilot_device", a.pilot_device},
                       {"pilot_seconds", a.pilot_seconds}};
   }
-  return j.dump(2) + "\n";
+  // every file of the directory (besides summary.json itself): what --force
+  // may replace, and nothing else
+  j["files"] = files;
+  // names that are not UTF-8 (paths may hold any bytes) are written with U+FFFD
+  return j.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace arnoldweb

@@ -35,18 +35,24 @@ SourcePos Scene::pos(const std::string& key) const {
 
 std::string Scene::origin(const std::string& key) const {
   const SourcePos p = pos(key);
-  if (p.set_index > 0 && static_cast<std::size_t>(p.set_index) <= overrides.size())
-    return "--set " + overrides[static_cast<std::size_t>(p.set_index - 1)];
+  if (p.set_index > 0 && static_cast<std::size_t>(p.set_index) <= overrides.size()) {
+    const auto i = static_cast<std::size_t>(p.set_index - 1);
+    if (i < override_labels.size() && !override_labels[i].empty()) return override_labels[i];
+    return "--set " + overrides[i];
+  }
   if (p.line > 0) return file + ":" + std::to_string(p.line) + ":" + std::to_string(p.column);
   return "default";
 }
 
 Scene parse_scene(const std::string& text, const std::string& file,
-                  const std::vector<std::string>& overrides) {
+                  const std::vector<std::string>& overrides, const std::vector<std::string>& labels) {
   using namespace scene_detail;
   Scene scene;
   scene.file = file.empty() ? "<string>" : file;
   scene.overrides = overrides;
+  scene.override_labels = labels;
+  scene.override_labels.resize(overrides.size());
+  scene.text = text;
 
   toml::table root;
   try {
@@ -59,6 +65,7 @@ Scene parse_scene(const std::string& text, const std::string& file,
 
   Origins origins;
   origins.file = scene.file;
+  origins.labels = scene.override_labels;
   Problems problems(origins);
   apply_overrides(root, overrides, origins, problems);
   check_structure(root, problems);
@@ -67,7 +74,8 @@ Scene parse_scene(const std::string& text, const std::string& file,
   return scene;
 }
 
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides,
+                 const std::vector<std::string>& labels) {
   auto fail = [&](const std::string& what) {
     throw SceneError(path, 0, 0, "", "cannot read the scene file: " + what);
   };
@@ -93,7 +101,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     text.append(buf, static_cast<std::size_t>(n));
   }
   ::close(fd);
-  return parse_scene(text, path, overrides);
+  return parse_scene(text, path, overrides, labels);
 }
 
 }  // namespace arnoldweb

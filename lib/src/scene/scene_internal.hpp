@@ -82,6 +82,7 @@ std::string show_double(double v);
 struct Origins {
   std::string file;
   std::vector<std::string> sets;      // the override texts, as given
+  std::vector<std::string> labels;    // how each was given ("" : "--set <text>")
   std::map<std::string, int> set_of;  // dotted key -> override index
 
   // The override that gave `dotted` or one of its parents, 0 if none.

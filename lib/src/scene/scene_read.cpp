@@ -311,7 +311,10 @@ int Origins::set_for(const std::string& dotted) const {
 }
 
 std::string Origins::source_name(int set_index) const {
-  return set_index > 0 ? "--set " + sets[static_cast<std::size_t>(set_index - 1)] : file;
+  if (set_index <= 0) return file;
+  const auto i = static_cast<std::size_t>(set_index - 1);
+  if (i < labels.size() && !labels[i].empty()) return labels[i];
+  return "--set " + sets[i];
 }
 
 void Problems::at(const std::string& key, const toml::source_region& where, std::string message) {

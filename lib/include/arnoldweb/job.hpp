@@ -1,0 +1,54 @@
+// arnoldweb: a job is everything one scene asks for: its main run and the
+// runs of its [[panel]] tables (the same scene with overrides, e.g. the zooms
+// of the paper's Figures 2 and 3). The panels are planned up front, so a bad
+// panel fails before any work; the parts run one after the other on one
+// device; the outputs are written as one directory (write_job, output.hpp):
+// the main run's files, panel-<name>/ for every panel and figure.png.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "arnoldweb/device.hpp"
+#include "arnoldweb/plan.hpp"
+#include "arnoldweb/result.hpp"
+#include "arnoldweb/run.hpp"
+
+namespace arnoldweb {
+
+struct JobPart {
+  std::string name;    // "" for the main run, else the panel's name
+  std::string title;   // the panel's caption
+  std::string subdir;  // where its outputs go in the job's directory: "" or "panel-<name>"
+  Plan plan;
+};
+
+struct Job {
+  std::vector<JobPart> parts;  // the main run first, then the panels in scene order
+  const Plan& main() const { return parts.front().plan; }
+};
+
+// Plans the scene and every panel (a panel is the scene's text read again with
+// the panel's overrides, then the scene's own overrides). Throws SceneError.
+Job plan_job(const Scene& scene);
+
+struct JobResult {
+  std::vector<Result> results;  // one per part that ran, in order
+  bool interrupted = false;     // a stop request ended the job early
+};
+
+// Told when each part of a job starts; returns the progress receiver for it
+// (or null).
+class JobObserver {
+ public:
+  virtual ~JobObserver() = default;
+  virtual Progress* begin_part(const Job& job, std::size_t index) = 0;
+};
+
+// Runs every part on `backend`; a stop request (options.stop) ends the part
+// that is running after its current chunk and skips the rest.
+JobResult run_job(const Job& job, Backend& backend, const RunOptions& options = {},
+                  JobObserver* observer = nullptr);
+
+}  // namespace arnoldweb

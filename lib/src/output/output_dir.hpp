@@ -1,0 +1,67 @@
+// arnoldweb: the output directory of a run, and the rules that keep a user's
+// files safe:
+//  - it is checked before anything is computed (and by `check`): the path is
+//    normalised, the place can be made and written (a probe is created and
+//    removed), and the file system has room for the estimated outputs;
+//  - results are produced in a staging directory beside it, marked as
+//    arnoldweb's, and moved into place at the end: a directory is either
+//    absent or complete;
+//  - an existing directory is replaced only with --force, and only if a run of
+//    arnoldweb wrote it: its summary.json lists every file in it ("files") and
+//    nothing else is inside; then only the listed files are deleted. The
+//    current directory, its parents, the scene file's directory and its
+//    parents, / and $HOME are never replaced;
+//  - staging directories left by processes that died are removed on the next
+//    run into the same place (only those that carry arnoldweb's marker).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "arnoldweb/output.hpp"
+
+namespace arnoldweb::detail {
+
+// `dir` without trailing slashes and with "." and ".." parts resolved
+// lexically; throws OutputRefused for an empty name.
+std::string normalise_output_dir(const std::string& dir);
+
+// Why `dir` may not be replaced by a run's outputs, or "" if it may (it was
+// written by arnoldweb and holds nothing else). Looks, changes nothing.
+std::string why_not_replaceable(const std::string& dir, const std::string& scene_file);
+
+// The files under `dir` that arnoldweb wrote, relative to it (from the
+// summary.json manifest, or, for directories written before manifests, the
+// names arnoldweb writes).
+std::vector<std::string> written_files(const std::string& dir);
+
+// A staging directory for the outputs of one run: created beside the final
+// directory with a marker file; commit() moves it into place. If it is
+// neither committed nor kept, the destructor removes it.
+class Staging {
+ public:
+  Staging(const std::string& final_dir, const OutputOptions& options);
+  ~Staging();
+  Staging(const Staging&) = delete;
+  Staging& operator=(const Staging&) = delete;
+
+  const std::string& path() const { return path_; }
+  const std::string& final_dir() const { return final_; }
+
+  // Moves the outputs into place (replacing an earlier arnoldweb directory
+  // only if options.force). Returns a warning, or "" (e.g. the old directory
+  // could not be removed completely).
+  std::string commit();
+  // Keeps what was written under a name that nothing removes automatically,
+  // and returns that name (after a failed write).
+  std::string keep(const std::string& suffix);
+
+ private:
+  std::string final_, path_;
+  std::vector<std::string> made_;  // parent directories this run created
+  OutputOptions options_;
+  bool done_ = false;
+};
+
+}  // namespace arnoldweb::detail

@@ -1,0 +1,33 @@
+// arnoldweb: planning a job: the scene and its panels (job.hpp).
+#include "arnoldweb/job.hpp"
+
+namespace arnoldweb {
+
+Job plan_job(const Scene& scene) {
+  Job job;
+  JobPart main;
+  main.plan = make_plan(scene);
+  job.parts.push_back(std::move(main));
+  for (const Scene::Panel& panel : scene.panels) {
+    // the panel's overrides, then the user's (so --set applies to every panel)
+    std::vector<std::string> sets = panel.sets;
+    std::vector<std::string> labels;
+    for (const std::string& set : panel.sets) labels.push_back("[[panel]] " + panel.name + ": " + set);
+    sets.insert(sets.end(), scene.overrides.begin(), scene.overrides.end());
+    labels.insert(labels.end(), scene.override_labels.begin(), scene.override_labels.end());
+    labels.resize(sets.size());
+    sets.push_back("output.dir=" + scene.output_dir + "/panel-" + panel.name);
+    labels.push_back("the output directory of panel " + panel.name);
+    Scene s = parse_scene(scene.text, scene.file, sets, labels);
+    s.panels.clear();
+    JobPart part;
+    part.name = panel.name;
+    part.title = panel.title;
+    part.subdir = "panel-" + panel.name;
+    part.plan = make_plan(s);
+    job.parts.push_back(std::move(part));
+  }
+  return job;
+}
+
+}  // namespace arnoldweb
