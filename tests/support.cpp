@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstring>
 #include <csignal>
 #include <sstream>
 
@@ -153,9 +154,9 @@ bool long_tests_enabled() {
 
 namespace {
 
-// Whether this process was started for the long suite by name (the command
-// line, from /proc: the doctest context keeps its filters to itself).
-bool long_suite_selected() {
+// Whether this process was started for `suite` by name (the command line,
+// from /proc: the doctest context keeps its filters to itself).
+bool suite_selected(const std::string& suite) {
   std::ifstream in("/proc/self/cmdline", std::ios::binary);
   const std::string cmdline((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::size_t start = 0;
@@ -164,7 +165,7 @@ bool long_suite_selected() {
     if (end == std::string::npos) end = cmdline.size();
     const std::string arg = cmdline.substr(start, end - start);
     for (const char* opt : {"-ts=", "--test-suite=", "-test-suite="})
-      if (arg.rfind(opt, 0) == 0 && arg.find("hard-long") != std::string::npos) return true;
+      if (arg.rfind(opt, 0) == 0 && arg.substr(std::strlen(opt)) == suite) return true;
     start = end + 1;
   }
   return false;
@@ -178,7 +179,14 @@ bool require_long_tests(const std::string& what) {
             << " is a long test (suite hard-long, ctest hard.long); set ARNOLDWEB_LONG_TESTS=1 to run it "
                "(bench/gpu/run.sh does)"
             << std::endl;
-  if (long_suite_selected()) std::exit(77);
+  if (suite_selected("hard-long")) std::exit(77);
+  return false;
+}
+
+bool require(bool available, const std::string& suite, const std::string& why_not) {
+  if (available) return true;
+  std::cout << "SKIPPED: " << why_not << std::endl;
+  if (suite_selected(suite)) std::exit(77);
   return false;
 }
 

@@ -67,6 +67,13 @@ StartedCli start_cli(const std::vector<std::string>& args, const CliOptions& opt
 // the whole binary without filters the test case is passed over with a
 // message instead, so that the other suites still run.
 bool long_tests_enabled();
+
+// For a test case that needs something this machine may lack (a tool, a
+// device, root): returns true if `available`; otherwise prints "SKIPPED:"
+// with the reason and, when the process was started for `suite` alone (as
+// ctest starts it), exits with 77 so that CTest reports the test as skipped.
+// Put such cases in a suite of their own, so nothing else is skipped with them.
+bool require(bool available, const std::string& suite, const std::string& why_not);
 bool require_long_tests(const std::string& what);
 
 }  // namespace awtest

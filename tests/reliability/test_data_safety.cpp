@@ -4,9 +4,13 @@
 // the fix it guards.
 #include <doctest/doctest.h>
 #include <signal.h>
+#include <sys/mount.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -269,5 +273,56 @@ TEST_SUITE("reliability") {
     CHECK(awtest::run_cli(run_args(scene, odd), &out) == 0);
     const auto j = summary_of(odd);
     CHECK(contains(j["scene"]["output"]["dir"].get<std::string>(), "odd-"));
+  }
+}
+
+// With the real ffmpeg (CI installs it): the movie is made and nothing runs.
+TEST_SUITE("reliability-ffmpeg") {
+  TEST_CASE("1. frames and a movie into directories named like shell commands, with ffmpeg") {
+    if (!awtest::require(fs::exists("/usr/bin/ffmpeg"), "reliability-ffmpeg",
+                         "ffmpeg is not installed (/usr/bin/ffmpeg); Debian: apt-get install ffmpeg"))
+      return;
+    const std::string root = awtest::temp_dir("inject-ffmpeg");
+    const std::string scene = write_scene(root);
+    for (const std::string name : {"a'; touch INJECTED; 'b", "a\"; touch INJECTED; \"b"}) {
+      CAPTURE(name);
+      awtest::CliOptions o;
+      o.cwd = awtest::temp_dir("inject-ffmpeg-run");
+      std::string out;
+      CHECK(awtest::run_cli(run_args(scene, name, {kFramesSets, kFramesSets + 4}), &out, o) == 0);
+      CAPTURE(out);
+      CHECK(find_named(o.cwd, "INJECTED", true).empty());
+      CHECK(fs::file_size(o.cwd + "/" + name + "/frames.mp4") > 1000);
+      CHECK(fs::exists(o.cwd + "/" + name + "/frames/frame_001.png"));
+    }
+  }
+}
+
+// On a small file system (a tmpfs, where this process may mount one).
+TEST_SUITE("reliability-tmpfs") {
+  TEST_CASE("4. too little free space is refused before computing, the old directory untouched") {
+    const std::string root = awtest::temp_dir("tmpfs");
+    const std::string disk = root + "/disk";
+    fs::create_directories(disk);
+    const bool mounted = ::mount("tmpfs", disk.c_str(), "tmpfs", 0, "size=400k") == 0;
+    if (!awtest::require(mounted, "reliability-tmpfs",
+                         std::string("cannot mount a tmpfs here (") + std::strerror(errno) + "; needs root)"))
+      return;
+    struct Unmount {
+      std::string path;
+      ~Unmount() { ::umount(path.c_str()); }
+    } unmount{disk};
+    const std::string scene = write_scene(root);
+    std::string out;
+    REQUIRE(awtest::run_cli(run_args(scene, disk + "/out"), &out) == 0);
+    const std::string before = slurp(disk + "/out/summary.json");
+    CHECK(awtest::run_cli(run_args(scene, disk + "/out", {"--force", "--set", "ensemble.trajectories=50000", "--set",
+                                                           "observe.final_states=true"}),
+                          &out) == 3);
+    CAPTURE(out);
+    CHECK(contains(out, "free"));
+    CHECK(contains(out, "nothing was computed"));
+    CHECK(slurp(disk + "/out/summary.json") == before);
+    CHECK(find_named(disk, ".partial-").empty());
   }
 }

@@ -71,6 +71,14 @@ constexpr std::int64_t kMaxTrajectories = 10'000'000'000'000;  // 1e13
 constexpr double kMaxStep = 1.0;                                // in T
 constexpr int kMaxNside = 8192;
 
+// Limits on a scene's text, checked before parsing (scene_limits.cpp).
+constexpr std::size_t kMaxSceneBytes = 1u << 20;  // 1 MiB
+constexpr int kMaxNesting = 32;                    // arrays and tables inside each other
+constexpr std::size_t kMaxWordLength = 256;        // a key path or bare value, outside quotes
+constexpr std::size_t kMaxDottedParts = 16;        // parts of a dotted key
+// Throws SceneError (file, line, column) if `text` exceeds them.
+void check_text_limits(const std::string& text, const std::string& file);
+
 // TOML literals: doubles that read back to the same bits and stay floats,
 // strings quoted and escaped.
 std::string toml_double(double v);

@@ -1,5 +1,8 @@
 // arnoldweb scene layer: --set key=value overrides, applied onto the parsed
 // file before anything is checked, so an override is checked like the file.
+#include <algorithm>
+
+#include "arnoldweb/errors.hpp"
 #include "scene/scene_internal.hpp"
 
 namespace arnoldweb::scene_detail {
@@ -88,10 +91,22 @@ void apply_overrides(toml::table& root, const std::vector<std::string>& override
       p.message = message;
       problems.add(std::move(p));
     };
+    if (text.size() > kMaxSceneBytes) {
+      problem("", "an override of " + std::to_string(text.size()) + " characters is too long");
+      continue;
+    }
     const auto eq = text.find('=');
     const std::string key = trim(text.substr(0, eq));
     if (eq == std::string::npos || key.empty()) {
       problem(key, "an override is key=value, e.g. --set integrator.step=0.005");
+      continue;
+    }
+    if (key.size() > kMaxWordLength) {
+      problem(key.substr(0, 40) + "...", "a key longer than " + std::to_string(kMaxWordLength) + " characters");
+      continue;
+    }
+    if (static_cast<std::size_t>(std::count(key.begin(), key.end(), '.')) >= kMaxDottedParts) {
+      problem(key.substr(0, 40) + "...", "a key with more than " + std::to_string(kMaxDottedParts) + " dotted parts");
       continue;
     }
     const KeySpec* spec = find_spec(key);
@@ -116,7 +131,16 @@ void apply_overrides(toml::table& root, const std::vector<std::string>& override
       }
       continue;
     }
-    const toml::table holder = value_of(trim(text.substr(eq + 1)), *spec);
+    const std::string value = trim(text.substr(eq + 1));
+    if (spec->doc.type != "string") {  // read as TOML: the parser's limits apply
+      try {
+        check_text_limits(value, "");
+      } catch (const SceneError& e) {
+        problem(key, e.message());
+        continue;
+      }
+    }
+    const toml::table holder = value_of(value, *spec);
     set_path(root, split_dots(key), *holder.get("v"), index, origins);
   }
 }
