@@ -150,7 +150,20 @@ void add_accuracy_command(CLI::App& app, Action& action) {
       "accuracy", "Pilot ensemble: energy error and cost of a scene, and the cheapest method and step for a target");
   add_scene_options(c, flags->scene);
   c->add_option("--target,-t", flags->target, "Target max |dE| over the ensemble (default: integrator.tolerance)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            double v = 0;
+            try {
+              std::size_t used = 0;
+              v = std::stod(text, &used);
+              if (used != text.size()) return "--target: " + text + " is not a number";
+            } catch (const std::exception&) {
+              return "--target: " + text + " is not a number";
+            }
+            if (!(v > 0 && v < 1)) return "--target must be a number greater than 0 and less than 1, got " + text;
+            return "";
+          },
+          "in (0, 1)"));
   c->add_option("--safety", flags->safety, "The pilot's max |dE| times this must meet the target (default 4)")
       ->check(CLI::Range(1.0, 1000.0));
   c->add_option("--pilot", flags->pilot, "Trajectories in the pilot ensemble (default 512)")

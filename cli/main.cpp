@@ -28,6 +28,20 @@ int main(int argc, char** argv) {
   add_render_command(app, action);
   add_accuracy_command(app, action);
 
+  // an unknown command is named (CLI11 would only say that one is required)
+  if (argc > 1 && argv[1][0] != '-') {
+    bool known = false;
+    std::string names;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      known |= sub->get_name() == argv[1];
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+    }
+    if (!known) {
+      std::cerr << "arnoldweb: error: unknown command '" << argv[1] << "' (commands: " << names
+                << "; arnoldweb --help)\n";
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstring>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,10 @@ struct CliOptions {
 // Run the arnoldweb CLI with arguments; returns the exit code (-1 if it did
 // not exit normally), stdout and stderr together in *out.
 int run_cli(const std::vector<std::string>& args, std::string* out = nullptr, const CliOptions& options = {});
+inline int run_cli(std::initializer_list<std::string> args, std::string* out = nullptr,
+                   const CliOptions& options = {}) {
+  return run_cli(std::vector<std::string>(args), out, options);
+}
 // The same with the arguments split at spaces (for arguments without spaces).
 int run_cli(const std::string& args, std::string* out = nullptr);
 

@@ -75,4 +75,24 @@ TEST_SUITE("reliability") {
     CHECK(awtest::run_cli({"check", dir}, &out) == 2);
     CHECK(contains(out, "a directory"));
   }
+
+  TEST_CASE("10. smaller defects: unknown commands named, arrays shown, --target checked, hopeless tolerances refused") {
+    const std::string dir = awtest::temp_dir("small");
+    const std::string scene = write(dir, "scene.toml", "[run]\naverage = 1.0\nduration = 1.0\n");
+    std::string out;
+    CHECK(awtest::run_cli({"frobnicate"}, &out) == 2);
+    CHECK(contains(out, "unknown command 'frobnicate'"));
+    CHECK(awtest::run_cli({"check", scene, "--set", "ensemble.cap.center=[1,2,3]"}, &out) == 2);
+    CHECK(contains(out, "got [1, 2, 3]"));
+    for (const char* bad : {"nan", "inf", "-1", "0", "2", "x"}) {
+      CAPTURE(bad);
+      CHECK(awtest::run_cli({"accuracy", scene, "--target", bad}, &out) == 2);
+      CHECK(contains(out, "--target"));
+    }
+    // a tolerance below double's round-off is refused at once, not after minutes of pilots
+    CHECK(awtest::run_cli({"check", scene, "--device", "cpu", "--set", "integrator.step=auto", "--set",
+                           "integrator.tolerance=1e-16"},
+                          &out) == 2);
+    CHECK(contains(out, "below what double precision can reach"));
+  }
 }

@@ -260,6 +260,17 @@ AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tole
   rep.tolerance = tolerance;
   rep.safety = o.safety;
   const double target = tolerance / o.safety;
+  // Round-off bounds the energy error from below: a target under a few dozen
+  // ulps of the energy scale cannot be met, whatever the pilot would try
+  // (which would take minutes to find out).
+  const double eps = scene.precision == Precision::Float ? 5.96e-8 : 1.11e-16;
+  const double floor = 32 * eps * (std::fabs(scene.energy) + 2);
+  if (target < floor)
+    fail(scene, "integrator.tolerance",
+         "max|dE| <= " + fmt(tolerance) + " (" + fmt(target) + " on the pilot with safety " + fmt(o.safety) +
+             ") is below what " + to_string(scene.precision) + " precision can reach at E = " + fmt(scene.energy) +
+             " (round-off: about " + fmt(floor) + "); choose a tolerance of at least " + fmt(floor * o.safety) +
+             (scene.precision == Precision::Float ? " or integrator.precision = \"double\"" : ""));
 
   // ---- the scene as written, validated (the guard does not stop a report)
   const bool concrete = !scene.step_auto;

@@ -35,7 +35,18 @@ std::string show(const toml::node& n) {
   if (auto v = n.as_integer()) return std::to_string(v->get());
   if (auto v = n.as_floating_point()) return show_double(v->get());
   if (auto v = n.as_boolean()) return v->get() ? "true" : "false";
-  if (n.is_table() || n.is_array()) return "";
+  if (auto a = n.as_array()) {  // [1, 2, 3], long ones shortened
+    std::string s = "[";
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      if (i == 8) {
+        s += ", ...";
+        break;
+      }
+      s += (i ? ", " : "") + show(*a->get(i));
+    }
+    return s + "]";
+  }
+  if (n.is_table()) return "";
   std::ostringstream o;
   n.visit([&o](const auto& x) { o << x; });
   return o.str();
