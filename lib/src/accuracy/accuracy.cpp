@@ -12,7 +12,7 @@
 // the pilot ensemble; if it misses, the measurement joins the fit and the
 // search repeats.
 #include "arnoldweb/accuracy.hpp"
-#include "core/scene_checks.hpp"
+#include "plan/scene_checks.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -11,7 +11,7 @@
 #include "arnoldweb/device.hpp"
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/sphere.hpp"
-#include "core/scene_checks.hpp"
+#include "plan/scene_checks.hpp"
 #include "aw_model.h"
 #include "aw_params.h"
 #include "aw_rng.h"
