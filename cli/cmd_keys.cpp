@@ -14,10 +14,7 @@ void add_keys_command(CLI::App& app, Action& action) {
   c->callback([&action, markdown] {
     action = [markdown] {
       if (*markdown) {
-        std::printf("| Key | Type | Allowed | Default | Meaning |\n|---|---|---|---|---|\n");
-        for (const auto& k : scene_keys())
-          std::printf("| `%s` | %s | %s | `%s` | %s |\n", k.key.c_str(), k.type.c_str(), k.allowed.c_str(),
-                      k.default_value.c_str(), k.meaning.c_str());
+        std::fputs(scene_keys_markdown().c_str(), stdout);
         return 0;
       }
       for (const auto& k : scene_keys())

@@ -103,6 +103,8 @@ struct Scene {
 
   // The scene as run, as TOML (every key, defaults included).
   std::string to_toml() const;
+  // The same as JSON (the echo in summary.json): derived from to_toml().
+  std::string to_json() const;
   // Position of a dotted key, for messages ({0, 0} for defaults).
   SourcePos pos(const std::string& key) const;
   // Where a key's value came from, for messages: "scene.toml:7:9",
@@ -128,5 +130,8 @@ struct SceneKey {
   std::string key, type, allowed, default_value, meaning;
 };
 const std::vector<SceneKey>& scene_keys();
+// The key table as Markdown: the list in docs/scenes.md, which is generated
+// from it (`arnoldweb keys --markdown`; a test fails when the page is stale).
+std::string scene_keys_markdown();
 
 }  // namespace arnoldweb

@@ -24,33 +24,6 @@ std::string utc_now() {
   return buf;
 }
 
-json scene_values(const Scene& s) {
-  json j;
-  j["model"] = {{"energy", s.energy}};
-  j["ensemble"] = {{"trajectories", s.trajectories}, {"seed", s.seed}, {"initial", s.initial}, {"chunk", s.chunk}};
-  if (s.initial == "cap") j["ensemble"]["cap"] = {{"center", s.cap_center}, {"radius", s.cap_radius}};
-  if (s.initial == "box") j["ensemble"]["box"] = {{"lon", s.box_lon}, {"lat", s.box_lat}};
-  if (s.initial == "gaussian") j["ensemble"]["gaussian"] = {{"mean", s.gaussian_mean}, {"sigma", s.gaussian_sigma}};
-  j["integrator"] = {{"method", s.method},
-                     {"step", s.step_auto ? json("auto") : json(s.step)},
-                     {"tolerance", s.tolerance},
-                     {"precision", to_string(s.precision)},
-                     {"math", to_string(s.math)},
-                     {"allow_unsafe_step", s.allow_unsafe_step}};
-  j["run"] = {{"average", s.average}, {"duration", s.duration}, {"device", s.device}};
-  j["observe"] = {{"velocity_map", s.velocity_map ? json({{"nside", s.nside}}) : json(false)},
-                  {"energy_error", s.energy_error ? json({{"every", s.energy_every}}) : json(false)},
-                  {"max_energy_error", s.max_energy_error ? json(*s.max_energy_error) : json(nullptr)},
-                  {"initial_states", s.initial_states},
-                  {"final_states", s.final_states}};
-  if (s.zoom)
-    j["observe"]["zoom"] = {{"center", s.zoom_center}, {"width", s.zoom_width}, {"resolution", s.zoom_resolution}};
-  if (s.confine) j["observe"]["confine"] = {{"center", s.confine_center}, {"width", s.confine_width}};
-  if (!s.frame_times.empty()) j["observe"]["frames"] = {{"times", s.frame_times}};
-  j["output"] = {{"dir", s.output_dir}, {"images", s.images}};
-  return j;
-}
-
 }  // namespace
 
 std::string summary_json(const Plan& plan, const Result& r, const std::vector<std::string>& files) {
@@ -115,7 +88,7 @@ std::string summary_json(const Plan& plan, const Result& r, const std::vector<st
                {"ordering", "RING"},
                {"frames", plan.frames},
                {"zoom_resolution", plan.zoom_resolution}};
-  j["scene"] = scene_values(plan.scene);
+  j["scene"] = json::parse(plan.scene.to_json());  // every key, from the key table
   j["scene_toml"] = plan.scene.to_toml();
   if (plan.auto_step.used) {  // integrator.step = "auto": the choice and its pilot (accuracy.hpp)
     const AutoStep& a = plan.auto_step;

@@ -6,6 +6,7 @@
 #include <toml++/toml.h>
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -20,12 +21,19 @@ enum class Shape {
   Composite,  // a value or a table of sub-keys (observe.velocity_map, observe.energy_error)
 };
 
+class Reader;
+// How a row writes its key's value as a TOML literal ("" = not set: the key is
+// left out) and how it reads a value into the Scene (recording problems).
+using Literal = std::function<std::string(const Scene&)>;
+using Read = std::function<void(Reader&, const std::string& key, const toml::node&, Scene&)>;
+
+// One row of the key table (keys.cpp).
 struct KeySpec {
   SceneKey doc;      // as published by scene_keys() (default_value from literal)
   std::string must;  // "an integer from 1 to 1e13": completes "must be ..."
   Shape shape = Shape::Value;
-  // The key's value in `s` as a TOML literal ("" = not set: key left out).
-  std::string (*literal)(const Scene& s) = nullptr;
+  Literal literal;
+  Read read;         // null for the panel.* keys (read as whole tables, panels.cpp)
 };
 
 // Every key, in the order of to_toml() and the docs.
@@ -129,9 +137,11 @@ void check_structure(const toml::table& root, Problems& problems);
 void apply_overrides(toml::table& root, const std::vector<std::string>& overrides,
                      Origins& origins, Problems& problems);
 
-// Reads every known key of `root` into `scene` (and scene.where); records
-// wrong types and values.
+// Reads every known key of `root` into `scene` (and scene.where), row by row
+// of the key table; records wrong types and values.
 void read_values(const toml::table& root, const Origins& origins, Problems& problems,
                  Scene& scene);
+// Reads the [[panel]] tables (panels.cpp).
+void read_panels(const toml::table& root, Problems& problems, Scene& scene);
 
 }  // namespace arnoldweb::scene_detail

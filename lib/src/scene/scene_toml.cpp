@@ -94,3 +94,15 @@ std::string Scene::to_toml() const {
 }
 
 }  // namespace arnoldweb
+
+namespace arnoldweb {
+
+std::string Scene::to_json() const {
+  // the TOML every key writes, read back and printed as JSON: the JSON echo
+  // has exactly the keys and values of the table
+  std::ostringstream o;
+  o << toml::json_formatter{toml::parse(to_toml())};
+  return o.str();
+}
+
+}  // namespace arnoldweb

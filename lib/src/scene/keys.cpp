@@ -1,0 +1,416 @@
+// arnoldweb scene layer: THE KEY TABLE. One row per scene key: its name, type,
+// allowed values, default (what to_toml writes for Scene{}), meaning, the
+// phrase of its error messages, how its value is read into the Scene and how
+// it is written back. Reading (read_values), --set, `arnoldweb keys`,
+// to_toml(), the JSON echo in summary.json and the key list of docs/scenes.md
+// (generated: `arnoldweb keys --markdown`) all come from here.
+// Adding a key: a field in Scene (scene.hpp) and a row here.
+#include <algorithm>
+
+#include "arnoldweb/methods.hpp"
+#include "scene/reader.hpp"
+
+namespace arnoldweb::scene_detail {
+namespace {
+
+// ------------------------------------------------------------- words
+std::string quoted_list(const std::vector<std::string>& names, const char* last_sep) {
+  std::string s;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i) s += i + 1 == names.size() ? last_sep : ", ";
+    s += "\"" + names[i] + "\"";
+  }
+  return s;
+}
+
+// "one of "a", "b", "c"" (or just "a" when there is one).
+std::string one_of(const std::vector<std::string>& names) {
+  if (names.size() == 1) return "\"" + names[0] + "\"";
+  return "one of " + quoted_list(names, ", ");
+}
+
+std::vector<std::string> method_name_list() {
+  std::vector<std::string> n;
+  for (const Method& m : methods()) n.push_back(m.name);
+  return n;
+}
+
+bool is_power_of_two(std::int64_t v) { return v > 0 && (v & (v - 1)) == 0; }
+
+// ------------------------------------------------------------- literals
+std::string boolean(bool b) { return b ? "true" : "false"; }
+std::string pair(const std::array<double, 2>& v) { return "[" + toml_double(v[0]) + ", " + toml_double(v[1]) + "]"; }
+std::string list(const std::vector<double>& v) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + toml_double(v[i]);
+  return s + "]";
+}
+
+template <class T>
+Literal integer_of(T Scene::*f) {
+  return [f](const Scene& s) { return std::to_string(s.*f); };
+}
+Literal real_of(double Scene::*f) {
+  return [f](const Scene& s) { return toml_double(s.*f); };
+}
+Literal bool_of(bool Scene::*f) {
+  return [f](const Scene& s) { return boolean(s.*f); };
+}
+Literal pair_of(std::array<double, 2> Scene::*f) {
+  return [f](const Scene& s) { return pair(s.*f); };
+}
+Literal text_of(std::string Scene::*f) {
+  return [f](const Scene& s) { return toml_string(s.*f); };
+}
+
+// ------------------------------------------------------------- readers
+Read real_into(double Scene::*f, std::function<bool(double)> ok) {
+  return [f, ok](Reader& r, const std::string& key, const toml::node& n, Scene& s) { r.real(key, n, s.*f, ok); };
+}
+template <class T>
+Read integer_into(T Scene::*f, std::function<bool(std::int64_t)> ok) {
+  return [f, ok](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+    std::int64_t v = 0;
+    if (r.integer(key, n, v, ok)) s.*f = static_cast<T>(v);
+  };
+}
+Read bool_into(bool Scene::*f) {
+  return [f](Reader& r, const std::string& key, const toml::node& n, Scene& s) { r.boolean(key, n, s.*f); };
+}
+Read pair_into(std::array<double, 2> Scene::*f, std::function<bool(double, double)> ok) {
+  return [f, ok](Reader& r, const std::string& key, const toml::node& n, Scene& s) { r.pair(key, n, s.*f, ok); };
+}
+Read choice_into(std::string Scene::*f, std::function<std::vector<std::string>()> names) {
+  return [f, names](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+    r.choice(key, n, s.*f, names());
+  };
+}
+template <class Table, class E>
+Read enum_into(E Scene::*f, const Table& (*table)()) {
+  return [f, table](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+    std::string word;
+    if (r.choice(key, n, word, names_of(table())))
+      for (const auto& e : table())
+        if (word == e.name) s.*f = e.value;
+  };
+}
+// A table of sub-keys that is always on (its sub-keys are rows of their own).
+Read table_only() {
+  return [](Reader& r, const std::string& key, const toml::node& n, Scene&) {
+    if (!n.is_table()) r.bad(key, n, false);
+  };
+}
+// A table that may be switched off with false (and on with true, if allowed).
+Read switch_into(bool Scene::*f, bool true_allowed) {
+  return [f, true_allowed](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+    r.switch_table(key, n, s.*f, true_allowed);
+  };
+}
+
+// ------------------------------------------------------------- the rows
+class Rows {
+ public:
+  explicit Rows(std::vector<KeySpec>& k) : k_(k) {}
+  // type and allowed: as the docs show them; must: completes "must be ...".
+  void operator()(std::string key, std::string type, std::string allowed, std::string must, Literal literal,
+                  Read read, std::string meaning, Shape shape = Shape::Value) {
+    KeySpec s;
+    s.doc.key = std::move(key);
+    s.doc.type = std::move(type);
+    s.doc.allowed = std::move(allowed);
+    s.doc.meaning = std::move(meaning);
+    s.must = std::move(must);
+    s.literal = std::move(literal);
+    s.read = std::move(read);
+    s.shape = shape;
+    const std::string d = s.literal(Scene{});
+    s.doc.default_value = d.empty() ? "(not set)" : d;
+    k_.push_back(std::move(s));
+  }
+
+ private:
+  std::vector<KeySpec>& k_;
+};
+
+const auto direction_ok = [](double, double lat) { return lat >= -90 && lat <= 90; };
+const auto positive = [](double v) { return v > 0; };
+const auto width_ok = [](double w) { return w > 0 && w < 120; };
+const auto at_least_0 = [](std::int64_t v) { return v >= 0; };
+
+void model_keys(Rows& add) {
+  add("model.energy", "float", "> -2 and <= 1e6",
+      "a float greater than -2 and at most 1e6 (for E <= -2 no phase space is accessible)", real_of(&Scene::energy),
+      real_into(&Scene::energy, [](double e) { return e > kMinEnergy && e <= kMaxEnergy; }),
+      "Total energy E of every trajectory; the effective perturbation is 2/E.");
+}
+
+void ensemble_keys(Rows& add) {
+  add("ensemble.trajectories", "integer", "1 to 1e13", "an integer from 1 to 1e13", integer_of(&Scene::trajectories),
+      integer_into(&Scene::trajectories, [](std::int64_t v) { return v >= 1 && v <= kMaxTrajectories; }),
+      "Number of trajectories in the ensemble.");
+  add("ensemble.seed", "integer", ">= 0", "an integer >= 0", integer_of(&Scene::seed),
+      integer_into(&Scene::seed, at_least_0),
+      "Seed of the counter-based random numbers: trajectory i starts from a state that depends "
+      "only on (seed, i), whatever the device or chunking.");
+  add("ensemble.initial", "string", quoted_list(initial_kinds(), " or "), one_of(initial_kinds()),
+      text_of(&Scene::initial), choice_into(&Scene::initial, initial_kinds),
+      "How initial states are drawn; X is uniform on the accessible part of the torus. "
+      "\"shell\": direction of P uniform on the sphere, speed sqrt(2 (E - V(X))). \"cap\", "
+      "\"box\": direction uniform in ensemble.cap or ensemble.box. \"gaussian\": see "
+      "ensemble.gaussian.");
+  add("ensemble.chunk", "integer", ">= 0 (0 = automatic)", "an integer >= 0 (0 = automatic)",
+      integer_of(&Scene::chunk), integer_into(&Scene::chunk, at_least_0),
+      "Trajectories per kernel launch; 0 lets the runner choose. Does not change the results.");
+  add("ensemble.cap", "table", "{ center = [lon, lat], radius = deg }",
+      "a table { center = [lon, lat], radius = <degrees> }",
+      [](const Scene& s) {
+        return "{ center = " + pair(s.cap_center) + ", radius = " + toml_double(s.cap_radius) + " }";
+      },
+      table_only(), "The spherical cap of momentum directions for ensemble.initial = \"cap\".", Shape::Composite);
+  add("ensemble.cap.center", "array of 2 floats", "[lon, lat] in degrees, lat in [-90, 90]",
+      "an array [longitude, latitude] in degrees, latitude from -90 to 90", pair_of(&Scene::cap_center),
+      pair_into(&Scene::cap_center, direction_ok),
+      "Centre of the cap: longitude and latitude of the momentum direction, in degrees "
+      "(P along (cos lat cos lon, cos lat sin lon, sin lat)).");
+  add("ensemble.cap.radius", "float", "> 0 and <= 180", "a float greater than 0 and at most 180 (degrees)",
+      real_of(&Scene::cap_radius), real_into(&Scene::cap_radius, [](double v) { return v > 0 && v <= 180; }),
+      "Angular radius of the cap, degrees.");
+  add("ensemble.box", "table", "{ lon = [a, b], lat = [c, d] }", "a table { lon = [from, to], lat = [from, to] } in degrees",
+      [](const Scene& s) { return "{ lon = " + pair(s.box_lon) + ", lat = " + pair(s.box_lat) + " }"; }, table_only(),
+      "The longitude/latitude box of momentum directions for ensemble.initial = \"box\" (uniform in area).",
+      Shape::Composite);
+  add("ensemble.box.lon", "array of 2 floats", "[from, to], from < to <= from + 360",
+      "an array [from, to] of longitudes in degrees with from < to <= from + 360", pair_of(&Scene::box_lon),
+      pair_into(&Scene::box_lon, [](double a, double b) { return a < b && b <= a + 360; }),
+      "Longitude range of the box, degrees.");
+  add("ensemble.box.lat", "array of 2 floats", "[from, to], -90 <= from < to <= 90",
+      "an array [from, to] of latitudes in degrees with -90 <= from < to <= 90", pair_of(&Scene::box_lat),
+      pair_into(&Scene::box_lat, [](double a, double b) { return a >= -90 && a < b && b <= 90; }),
+      "Latitude range of the box, degrees.");
+  add("ensemble.gaussian", "table", "{ mean = [p_x, p_y], sigma = [s_x, s_y] }",
+      "a table { mean = [p_x, p_y], sigma = [s_x, s_y] }",
+      [](const Scene& s) { return "{ mean = " + pair(s.gaussian_mean) + ", sigma = " + pair(s.gaussian_sigma) + " }"; },
+      table_only(),
+      "Gaussian initial momenta for ensemble.initial = \"gaussian\": p_x, p_y normal, p_z from "
+      "the energy with a random sign (the paper's Figure 4: mean = [sqrt(E), sqrt(E)], sigma = "
+      "[0.01, 0.01]).",
+      Shape::Composite);
+  add("ensemble.gaussian.mean", "array of 2 floats", "finite", "an array [p_x, p_y] of finite floats",
+      pair_of(&Scene::gaussian_mean), pair_into(&Scene::gaussian_mean, [](double, double) { return true; }),
+      "Mean of p_x and p_y.");
+  add("ensemble.gaussian.sigma", "array of 2 floats", "> 0", "an array [s_x, s_y] of floats greater than 0",
+      pair_of(&Scene::gaussian_sigma), pair_into(&Scene::gaussian_sigma, [](double a, double b) { return a > 0 && b > 0; }),
+      "Standard deviations of p_x and p_y.");
+}
+
+void integrator_keys(Rows& add) {
+  add("integrator.method", "string", quoted_list(method_name_list(), " or "), one_of(method_name_list()),
+      text_of(&Scene::method), choice_into(&Scene::method, method_name_list),
+      "Symplectic integration method (`arnoldweb methods` lists order and cost).");
+  add("integrator.step", "float or \"auto\"", "> 0 and <= 1, or \"auto\"",
+      "a float greater than 0 and at most 1 (the step in units of T = 2 pi) or \"auto\"",
+      [](const Scene& s) { return s.step_auto ? std::string("\"auto\"") : toml_double(s.step); },
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        std::string word;
+        if (n.is_string()) {
+          if (r.text(key, n, word, [](const std::string& v) { return v == "auto"; }, {"auto"})) s.step_auto = true;
+        } else if (r.real(key, n, s.step, [](double h) { return h > 0 && h <= kMaxStep; })) {
+          s.step_auto = false;
+        }
+      },
+      "Integration step h in units of T = 2 pi. \"auto\": choose a step that meets integrator.tolerance.");
+  add("integrator.tolerance", "float", "> 0 and < 1", "a float greater than 0 and less than 1",
+      real_of(&Scene::tolerance), real_into(&Scene::tolerance, [](double t) { return t > 0 && t < 1; }),
+      "Target largest energy error over the ensemble, used with integrator.step = \"auto\".");
+  add("integrator.precision", "string", quoted_list(names_of(precision_names()), " or "),
+      one_of(names_of(precision_names())), [](const Scene& s) { return toml_string(to_string(s.precision)); },
+      enum_into(&Scene::precision, precision_names), "Floating-point type of the integration.");
+  add("integrator.math", "string", quoted_list(names_of(math_names()), " or "), one_of(names_of(math_names())),
+      [](const Scene& s) { return toml_string(to_string(s.math)); }, enum_into(&Scene::math, math_names),
+      "\"portable\": the same bits on every backend (own sin/cos, no contraction). \"native\": "
+      "vendor functions where faster; results then differ between backends.");
+  add("integrator.allow_unsafe_step", "boolean", "true or false", "true or false", bool_of(&Scene::allow_unsafe_step),
+      bool_into(&Scene::allow_unsafe_step),
+      "Run even when the step-size guard refuses the step (h k p_max >= pi).");
+}
+
+void run_keys(Rows& add) {
+  add("run.average", "float", "> 0", "a finite float greater than 0 (in units of T)", real_of(&Scene::average),
+      real_into(&Scene::average, positive), "Averaging window dt of the velocity, in T; a multiple of integrator.step.");
+  add("run.duration", "float", "> 0", "a finite float greater than 0 (in units of T)", real_of(&Scene::duration),
+      real_into(&Scene::duration, positive), "Propagation time t_p, in T; a multiple of run.average.");
+  const std::string forms = "\"auto\", \"cpu\", \"opencl:N\" or \"cuda:N\"";
+  add("run.device", "string", forms, forms + " (N = 0, 1, ...: the index in `arnoldweb devices`)",
+      text_of(&Scene::device),
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) { r.text(key, n, s.device, valid_device); },
+      "Where to run. \"auto\" picks the default device; whether the device exists is checked "
+      "when the run starts.");
+}
+
+void observe_keys(Rows& add) {
+  add("observe.velocity_map", "table or boolean", "{ nside = N }, true or false",
+      "a table { nside = N }, true (nside 64) or false",
+      [](const Scene& s) { return s.velocity_map ? "{ nside = " + std::to_string(s.nside) + " }" : boolean(false); },
+      switch_into(&Scene::velocity_map, true),
+      "HEALPix map of the directions of the averaged velocities; false: no map. true: the default nside.",
+      Shape::Composite);
+  add("observe.velocity_map.nside", "integer", "power of two, 1 to 8192", "a power of two from 1 to 8192",
+      integer_of(&Scene::nside),
+      integer_into(&Scene::nside, [](std::int64_t v) { return v <= kMaxNside && is_power_of_two(v); }),
+      "HEALPix resolution of the velocity map: 12 nside^2 pixels.");
+  add("observe.energy_error", "boolean or table", "true, false or { every = dt }",
+      "true, false or a table { every = <sample interval in T> }",
+      [](const Scene& s) { return s.energy_error ? "{ every = " + toml_double(s.energy_every) + " }" : boolean(false); },
+      switch_into(&Scene::energy_error, true),
+      "Track the energy error dE of every trajectory. A table sets the sample interval; true samples every 1 T.",
+      Shape::Composite);
+  add("observe.energy_error.every", "float", "> 0", "a finite float greater than 0 (sample interval in T)",
+      real_of(&Scene::energy_every), real_into(&Scene::energy_every, positive),
+      "Interval between energy-error samples, in T; divides run.average.");
+  add("observe.max_energy_error", "float", "> 0, or absent", "a finite float greater than 0",
+      [](const Scene& s) { return s.max_energy_error ? toml_double(*s.max_energy_error) : std::string(); },
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        double limit = 0;
+        if (r.real(key, n, limit, positive)) s.max_energy_error = limit;
+      },
+      "Flag trajectories whose energy error abs(dE) exceeds this value (they are counted in "
+      "the result); implies energy tracking. Absent: no limit.");
+  add("observe.initial_states", "boolean", "true or false", "true or false", bool_of(&Scene::initial_states),
+      bool_into(&Scene::initial_states), "Write the initial state of every trajectory.");
+  add("observe.final_states", "boolean", "true or false", "true or false", bool_of(&Scene::final_states),
+      bool_into(&Scene::final_states), "Write the final state of every trajectory.");
+  add("observe.zoom", "table or false", "{ center = [lon, lat], width = deg, resolution = R } or false",
+      "a table { center = [lon, lat], width = <degrees>, resolution = R } or false",
+      [](const Scene& s) {
+        return s.zoom ? "{ center = " + pair(s.zoom_center) + ", width = " + toml_double(s.zoom_width) +
+                            ", resolution = " + std::to_string(s.zoom_resolution) + " }"
+                      : boolean(false);
+      },
+      switch_into(&Scene::zoom, false),
+      "A high-resolution R x R histogram of the averaged velocities in a square region, in "
+      "gnomonic projection about its centre (zoom panels).",
+      Shape::Composite);
+  add("observe.zoom.center", "array of 2 floats", "[lon, lat] in degrees, lat in [-90, 90]",
+      "an array [longitude, latitude] in degrees, latitude from -90 to 90", pair_of(&Scene::zoom_center),
+      pair_into(&Scene::zoom_center, direction_ok), "Centre of the zoom region, degrees.");
+  add("observe.zoom.width", "float", "> 0 and < 120", "a float greater than 0 and less than 120 (degrees)",
+      real_of(&Scene::zoom_width), real_into(&Scene::zoom_width, width_ok), "Full angular width of the zoom square, degrees.");
+  add("observe.zoom.resolution", "integer", "16 to 8192", "an integer from 16 to 8192",
+      integer_of(&Scene::zoom_resolution),
+      integer_into(&Scene::zoom_resolution, [](std::int64_t v) { return v >= 16 && v <= 8192; }),
+      "Bins per side of the zoom histogram.");
+  add("observe.confine", "table or false", "{ center = [lon, lat], width = deg } or false",
+      "a table { center = [lon, lat], width = <degrees> } or false",
+      [](const Scene& s) {
+        return s.confine ? "{ center = " + pair(s.confine_center) + ", width = " + toml_double(s.confine_width) + " }"
+                         : boolean(false);
+      },
+      switch_into(&Scene::confine, false),
+      "Region confinement: only trajectories whose momentum direction stays inside this square "
+      "(gnomonic, checked at every energy sample) are binned; the others are counted as left_region.",
+      Shape::Composite);
+  add("observe.confine.center", "array of 2 floats", "[lon, lat] in degrees, lat in [-90, 90]",
+      "an array [longitude, latitude] in degrees, latitude from -90 to 90", pair_of(&Scene::confine_center),
+      pair_into(&Scene::confine_center, direction_ok), "Centre of the confinement square, degrees.");
+  add("observe.confine.width", "float", "> 0 and < 120", "a float greater than 0 and less than 120 (degrees)",
+      real_of(&Scene::confine_width), real_into(&Scene::confine_width, width_ok),
+      "Full angular width of the square, degrees.");
+  add("observe.frames", "table or false", "{ times = [t0, t1, ...] } or false",
+      "a table { times = [t0, t1, ...] } (in T) or false",
+      [](const Scene& s) { return s.frame_times.empty() ? boolean(false) : "{ times = " + list(s.frame_times) + " }"; },
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        bool on = false;
+        if (r.switch_table(key, n, on, false) && !on) s.frame_times.clear();
+      },
+      "Time series: frame k is the velocity map of the windows starting in [t_k, t_k+1) (a diffusion movie).",
+      Shape::Composite);
+  add("observe.frames.times", "array of floats", "2 to 65 increasing times >= 0, multiples of run.average",
+      "an array of 2 to 65 increasing times >= 0 (in T)",
+      [](const Scene& s) { return s.frame_times.empty() ? std::string() : list(s.frame_times); },
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        r.reals(key, n, s.frame_times, 0, [](const std::vector<double>& t) {
+          if (t.size() < 2 || t.size() > 65 || t[0] < 0) return false;
+          for (std::size_t k = 1; k < t.size(); ++k)
+            if (!(t[k] > t[k - 1])) return false;
+          return true;
+        });
+      },
+      "Frame boundaries, in T.");
+}
+
+void output_keys(Rows& add) {
+  add("output.dir", "string", "non-empty path", "a non-empty string (a directory path)", text_of(&Scene::output_dir),
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        r.text(key, n, s.output_dir, [](const std::string& d) { return !d.empty(); });
+      },
+      "Directory the outputs are written to.");
+  add("output.images", "boolean", "true or false", "true or false", bool_of(&Scene::images),
+      bool_into(&Scene::images), "Write images of the maps.");
+}
+
+// [[panel]] tables are read as a whole (panels.cpp); these rows document them.
+void panel_keys(Rows& add) {
+  const Literal none = [](const Scene&) { return std::string(); };
+  add("panel.name", "string", "letters, digits, - and _", "a non-empty string of letters, digits, - and _", none, nullptr,
+      "Name of a further run of this scene drawn as an inset of the same figure; its outputs go "
+      "to <output.dir>/panel-<name>.");
+  add("panel.title", "string", "any", "a string", none, nullptr, "Caption of the panel.");
+  add("panel.set", "array of strings", "key=value overrides", "an array of \"key=value\" strings", none, nullptr,
+      "Overrides applied to the scene for this panel, written like --set.");
+}
+
+std::vector<KeySpec> build() {
+  std::vector<KeySpec> k;
+  Rows rows(k);
+  model_keys(rows);
+  ensemble_keys(rows);
+  integrator_keys(rows);
+  run_keys(rows);
+  observe_keys(rows);
+  output_keys(rows);
+  panel_keys(rows);
+  return k;
+}
+
+}  // namespace
+
+const std::vector<KeySpec>& key_specs() {
+  static const std::vector<KeySpec> specs = build();
+  return specs;
+}
+
+const KeySpec* find_spec(const std::string& dotted) {
+  for (const KeySpec& s : key_specs())
+    if (s.doc.key == dotted) return &s;
+  return nullptr;
+}
+
+void read_values(const toml::table& root, const Origins& origins, Problems& problems, Scene& scene) {
+  Reader r(root, origins, problems, scene);
+  for (const KeySpec& k : key_specs())
+    if (k.read)
+      if (const toml::node* n = r.node(k.doc.key)) k.read(r, k.doc.key, *n, scene);
+  read_panels(root, problems, scene);
+}
+
+}  // namespace arnoldweb::scene_detail
+
+namespace arnoldweb {
+
+const std::vector<SceneKey>& scene_keys() {
+  static const std::vector<SceneKey> keys = [] {
+    std::vector<SceneKey> k;
+    for (const auto& s : scene_detail::key_specs()) k.push_back(s.doc);
+    return k;
+  }();
+  return keys;
+}
+
+std::string scene_keys_markdown() {
+  std::string t = "| Key | Type | Allowed | Default | Meaning |\n|---|---|---|---|---|\n";
+  for (const auto& k : scene_keys())
+    t += "| `" + k.key + "` | " + k.type + " | " + k.allowed + " | `" + k.default_value + "` | " + k.meaning + " |\n";
+  return t;
+}
+
+}  // namespace arnoldweb
