@@ -33,10 +33,10 @@ void print_plan(std::ostream& o, const Plan& p, const std::string& device) {
     << "work         " << short_number(p.trajectory_steps) << " trajectory-steps, "
     << short_number(p.force_evaluations) << " force evaluations\n";
   if (s.velocity_map) o << "velocity map HEALPix nside " << s.nside << " (" << p.npix << " pixels, RING)\n";
-  if (p.auto_step.used)
-    o << "auto step    " << p.auto_step.method << " at h = " << p.auto_step.step << " T for max |dE| <= "
-      << short_number(p.auto_step.tolerance) << " (pilot: " << p.auto_step.pilot_trajectories << " trajectories, max |dE| "
-      << short_number(p.auto_step.pilot_max) << ")\n";
+  if (p.scene.auto_step.used)
+    o << "auto step    " << p.scene.auto_step.method << " at h = " << p.scene.auto_step.step << " T for max |dE| <= "
+      << short_number(p.scene.auto_step.tolerance) << " (pilot: " << p.scene.auto_step.pilot_trajectories << " trajectories, max |dE| "
+      << short_number(p.scene.auto_step.pilot_max) << ")\n";
   for (const auto& w : p.warnings) o << "warning      " << w << "\n";
 }
 

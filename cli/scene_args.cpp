@@ -1,3 +1,4 @@
+#include "arnoldweb/accuracy.hpp"
 #include "arnoldweb/errors.hpp"
 #include "command.hpp"
 
@@ -27,7 +28,13 @@ Scene load_scene_args(const SceneArgs& a) {
 
 PreparedJob prepare_job(const SceneArgs& args, bool force) {
   PreparedJob p;
-  p.job = plan_job(load_scene_args(args));
+  // integrator.step = "auto": a pilot on the cpu backend (in portable math
+  // the same bits as every device), opened only when a part asks for it
+  std::unique_ptr<Backend> pilot;
+  p.job = plan_job(load_scene_args(args), [&pilot](const Scene& s) {
+    if (!pilot) pilot = open_backend("cpu");
+    return resolve_step(s, *pilot);
+  });
   p.output.force = force;
   p.output.scene_file = args.scene;
   p.output.expected_bytes = estimate_output_bytes(p.job);

@@ -1,22 +1,23 @@
 /* arnoldweb OpenCL entry points: thin kernels over lib/device.
- * Compiled at run time with -DAW_FEATURES=<mask> -DAW_STAGES=<n>
- * -DAW_KICK_FIRST=<0|1> -DAW_LANES=<n> [-DAW_FLOAT] [-DAW_NATIVE_MATH]. */
+ * Compiled at run time with the plan's options (KernelConfig::defines()):
+ * -DAW_FEATURES=<mask> -DAW_STAGES=<n> -DAW_KICK_FIRST=<0|1> -DAW_INITIAL=<k>
+ * -DAW_MODEL=<id> -DAW_LANES=<n> [-DAW_FLOAT] [-DAW_NATIVE_MATH]. */
 #define AW_LOCAL __local
 #define AW_BARRIER() barrier(CLK_LOCAL_MEM_FENCE)
 #include "aw_ensemble.h"
 #include "aw_reduce.h"
 
-__kernel void aw_ensemble(ulong chunk_first, ulong chunk_end, __constant real* rp,
-                          __constant long* ip, __global uint* map, __global uint* counters,
+__kernel void aw_ensemble(ulong chunk_first, ulong chunk_end, __constant aw_rparams* rp,
+                          __constant aw_iparams* ip, __global uint* map, __global uint* counters,
                           __global real* initial_r, __global real* final_r,
                           __global long* final_i, __global real* group_stats,
                           __local real* scratch) {
-  ulong first = chunk_first + (ulong)get_global_id(0) * AW_LANES;
+  const aw_config cfg = {AW_FEATURES, AW_STAGES, AW_KICK_FIRST, AW_INITIAL};
+  aw_lanes l = {chunk_first + (ulong)get_global_id(0) * AW_LANES, chunk_end, chunk_first};
   real emax = 0, esum = 0;
-  if (first < chunk_end) {
+  if (l.first < chunk_end) {
     aw_outputs out = {map, counters, initial_r, final_r, final_i};
-    aw_ensemble_item(AW_FEATURES, AW_STAGES, AW_KICK_FIRST, AW_INITIAL, first, chunk_end, chunk_first, rp,
-                     ip, out, &emax, &esum);
+    aw_ensemble_item(cfg, l, rp, ip, out, &emax, &esum);
   }
   aw_group_reduce(scratch, (int)get_local_id(0), (int)get_local_size(0), get_group_id(0), emax,
                   esum, group_stats);

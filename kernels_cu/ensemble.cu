@@ -1,7 +1,7 @@
 /* arnoldweb CUDA entry points: thin kernels over lib/device.
  * Compiled at run time by NVRTC with the same defines as the OpenCL kernels:
- * -DAW_FEATURES=<mask> -DAW_STAGES=<n> -DAW_KICK_FIRST=<0|1> [-DAW_FLOAT]
- * [-DAW_NATIVE_MATH]. */
+ * -DAW_FEATURES=<mask> -DAW_STAGES=<n> -DAW_KICK_FIRST=<0|1> -DAW_INITIAL=<k>
+ * -DAW_MODEL=<id> [-DAW_FLOAT] [-DAW_NATIVE_MATH]. */
 #define AW_LOCAL
 #define AW_BARRIER() __syncthreads()
 #include "aw_ensemble.h"
@@ -23,21 +23,19 @@
 #define AW_CUDA_MIN_BLOCKS 4 /* H200 sweep 4/6/8: 1.915/1.889/1.911e10 and 1.944/1.896/1.901e10 */
 #endif
 #endif
-extern "C" __global__ void __launch_bounds__(AW_CUDA_MAX_BLOCK, AW_CUDA_MIN_BLOCKS) aw_ensemble(aw_u64 chunk_first, aw_u64 chunk_end, const real* rp,
-                                       const aw_i64* ip, aw_u32* map, aw_u32* counters,
-                                       real* initial_r, real* final_r, aw_i64* final_i,
-                                       real* group_stats) {
+extern "C" __global__ void __launch_bounds__(AW_CUDA_MAX_BLOCK, AW_CUDA_MIN_BLOCKS)
+    aw_ensemble(aw_u64 chunk_first, aw_u64 chunk_end, const aw_rparams* rp, const aw_iparams* ip, aw_u32* map,
+                aw_u32* counters, real* initial_r, real* final_r, aw_i64* final_i, real* group_stats) {
   extern __shared__ unsigned char aw_shared[];
   real* scratch = (real*)aw_shared;
-  aw_u64 first = chunk_first + ((aw_u64)blockIdx.x * blockDim.x + threadIdx.x);
+  const aw_config cfg = {AW_FEATURES, AW_STAGES, AW_KICK_FIRST, AW_INITIAL};
+  aw_lanes l = {chunk_first + ((aw_u64)blockIdx.x * blockDim.x + threadIdx.x), chunk_end, chunk_first};
   real emax = 0, esum = 0;
-  if (first < chunk_end) {
+  if (l.first < chunk_end) {
     aw_outputs out = {map, counters, initial_r, final_r, final_i};
-    aw_ensemble_item(AW_FEATURES, AW_STAGES, AW_KICK_FIRST, AW_INITIAL, first, chunk_end, chunk_first, rp,
-                     ip, out, &emax, &esum);
+    aw_ensemble_item(cfg, l, rp, ip, out, &emax, &esum);
   }
-  aw_group_reduce(scratch, (int)threadIdx.x, (int)blockDim.x, blockIdx.x, emax, esum,
-                  group_stats);
+  aw_group_reduce(scratch, (int)threadIdx.x, (int)blockDim.x, blockIdx.x, emax, esum, group_stats);
 }
 
 /* total[i] += part[i]; part[i] = 0: 32-bit chunk counts into 64-bit totals. */

@@ -29,12 +29,18 @@ const char* kScene =
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
+// The stages a scene with step = "auto" goes through: resolve, then plan.
+Plan auto_plan(const Scene& s) {
+  auto cpu = open_backend("cpu");
+  return make_plan(resolve_step(s, *cpu));
+}
+
 }  // namespace
 
 TEST_SUITE("core") {
   TEST_CASE("auto: the chosen method and step meet the tolerance on the whole ensemble") {
-    const Plan p = make_plan(awtest::scene_from(kScene));
-    const AutoStep& a = p.auto_step;
+    const Plan p = auto_plan(awtest::scene_from(kScene));
+    const AutoStep& a = p.scene.auto_step;
     REQUIRE(a.used);
     CHECK(a.method_chosen);  // integrator.method is not in the scene
     CHECK(a.tolerance == 1e-7);
@@ -62,18 +68,22 @@ TEST_SUITE("core") {
   }
 
   TEST_CASE("auto: a method written in the scene is kept, only the step is chosen") {
-    const Plan p = make_plan(awtest::scene_from(kScene, {"integrator.method=forest-ruth"}));
-    CHECK(p.auto_step.used);
-    CHECK_FALSE(p.auto_step.method_chosen);
+    const Plan p = auto_plan(awtest::scene_from(kScene, {"integrator.method=forest-ruth"}));
+    CHECK(p.scene.auto_step.used);
+    CHECK_FALSE(p.scene.auto_step.method_chosen);
     CHECK(p.method.name == "forest-ruth");
-    CHECK(p.auto_step.pilot_max * p.auto_step.safety <= 1e-7);
+    CHECK(p.scene.auto_step.pilot_max * p.scene.auto_step.safety <= 1e-7);
     // forest-ruth needs a smaller step than the cheapest method would
-    CHECK(p.step < make_plan(awtest::scene_from(kScene)).step);
+    CHECK(p.step < auto_plan(awtest::scene_from(kScene)).step);
+  }
+
+  TEST_CASE("planning is pure: make_plan refuses an unresolved \"auto\" step, naming the stage that resolves it") {
+    CHECK_THROWS_WITH_AS(make_plan(awtest::scene_from(kScene)), doctest::Contains("resolve_step"), SceneError);
   }
 
   TEST_CASE("auto: an unreachable tolerance is refused at integrator.tolerance") {
     try {
-      make_plan(awtest::scene_from(kScene, {"integrator.precision=float", "integrator.method=yoshida6a"}));
+      auto_plan(awtest::scene_from(kScene, {"integrator.precision=float", "integrator.method=yoshida6a"}));
       FAIL("float reached 1e-7");
     } catch (const SceneError& e) {
       INFO(e.what());

@@ -25,7 +25,7 @@ Plan plan_for(double energy, double step = 0.01) {
 
 core_d::aw_lstate initial(const Plan& p, std::uint64_t index, bool* ok) {
   core_d::aw_lstate st;
-  *ok = core_d::aw_initial_state(&st, AW_INITIAL_SHELL, index, p.rp.data(), p.ip.data()) != 0.0;
+  *ok = core_d::aw_initial_state(&st, AW_INITIAL_SHELL, index, core_d::rp_of(p), core_d::ip_of(p)) != 0.0;
   return st;
 }
 
@@ -103,7 +103,7 @@ TEST_SUITE("core") {
     double max_first = 0, max_second = 0;
     const int segments = 1000, steps = 1000;
     for (int g = 0; g < segments; ++g) {
-      core_d::aw_segment(&s, steps, p.rp.data(), p.method.stages, p.method.kick_first);
+      core_d::aw_segment(&s, steps, core_d::rp_of(p), p.method.stages, p.method.kick_first);
       const double de = std::fabs(core_d::aw_energy(&s) - e0);
       (g < segments / 2 ? max_first : max_second) = std::max(g < segments / 2 ? max_first : max_second, de);
     }
@@ -120,7 +120,7 @@ TEST_SUITE("core") {
     REQUIRE(ok);
     core_d::aw_force(&s);
     const double x0 = s.ux, px0 = s.px;
-    core_d::aw_segment(&s, 5000, p.rp.data(), p.method.stages, p.method.kick_first);
+    core_d::aw_segment(&s, 5000, core_d::rp_of(p), p.method.stages, p.method.kick_first);
     CHECK(std::fabs(s.ux) <= 0.5);
     CHECK(std::fabs(s.uy) <= 0.5);
     CHECK(std::fabs(s.uz) <= 0.5);

@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "aw_params.h"
+#include "plan/kernel_params.hpp"
 #include "support.hpp"
 
 using namespace arnoldweb;
@@ -154,7 +155,7 @@ TEST_SUITE("parity") {
       REQUIRE(r.zoom.size() == 32 * 32);
       // the same binning on the host, from the initial and final states
       std::vector<std::uint64_t> host(32 * 32, 0);
-      const double* reg = &plan.rp[AW_P_ZOOM];
+      const double* reg = &arnoldweb::detail::params(plan).reals.zoom.c[0];
       for (std::size_t t = 0; t < s.trajectories; ++t) {
         if (r.final_i[t * AW_STATE_INTS + 3] != AW_STATUS_OK) continue;
         double d[3];
@@ -196,7 +197,7 @@ TEST_SUITE("parity") {
       CHECK(r.binned > 0);
       CHECK(r.binned + r.flagged() + r.left_region == r.trajectories);
       CHECK(total(r.map) == r.binned);
-      const double* reg = &plan.rp[AW_P_CONFINE];
+      const double* reg = &arnoldweb::detail::params(plan).reals.confine.c[0];
       for (std::size_t t = 0; t < s.trajectories; ++t) {
         const auto st = r.final_i[t * AW_STATE_INTS + 3];
         CHECK((st == AW_STATUS_OK || st == AW_STATUS_LEFT_REGION));

@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "aw_params.h"
+#include "plan/kernel_params.hpp"
 #include "support.hpp"
 
 using namespace arnoldweb;
@@ -41,8 +42,9 @@ TEST_SUITE("parity") {
         CAPTURE(poison);
         Plan p = flag_plan(1000);
         p.kernel.features |= AW_F_TEST_INJECT;
-        p.rp[AW_P_INJECT_VALUE] = poison;
-        p.ip[AW_I_INJECT_INDEX] = 417;
+        arnoldweb::detail::KernelParams& kp = arnoldweb::detail::edit_params(p);
+        kp.reals.inject_value = poison;
+        kp.ints.inject_index = 417;
         const Result r = awtest::run_on(dev.id, p);
         CHECK(r.flagged_nonfinite == 1);
         CHECK(r.flagged_energy == 0);

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "plan/kernel_params.hpp"
 #include "support.hpp"
 #include "test_hard.hpp"
 
@@ -32,8 +33,8 @@ namespace {
 class DoubleRadians {
  public:
   DoubleRadians(const Plan& plan, const LdState& start) {
-    for (int i = 0; i < plan.method.stages; ++i) drift_.push_back(static_cast<double>(kTwoPiL * plan.rp[AW_P_DRIFT + i]));
-    for (int i = 0; i <= plan.method.stages; ++i) kick_.push_back(plan.rp[AW_P_KICK + i]);
+    for (int i = 0; i < plan.method.stages; ++i) drift_.push_back(static_cast<double>(kTwoPiL * arnoldweb::detail::params(plan).reals.drift[i]));
+    for (int i = 0; i <= plan.method.stages; ++i) kick_.push_back(arnoldweb::detail::params(plan).reals.kick[i]);
     for (int c = 0; c < 3; ++c) {
       x[c] = static_cast<double>(start.x[c]);
       p[c] = static_cast<double>(start.p[c]);
@@ -85,7 +86,7 @@ TEST_SUITE("hard") {
       const LdSplitting ld(plan);
       DoubleRadians naive(plan, l);
       for (std::int64_t done = 0; done < kSteps; done += kSample) {
-        core_d::aw_segment(&s, kSample, plan.rp.data(), plan.method.stages, plan.method.kick_first);
+        core_d::aw_segment(&s, kSample, core_d::rp_of(plan), plan.method.stages, plan.method.kick_first);
         for (std::int64_t n = 0; n < kSample; ++n) {
           ld.step(l);
           naive.step();

@@ -54,15 +54,15 @@ inline long double ld_energy(const LdState& s) {
 }
 
 // A plan's method and step, in long double radians, without wrapping: drift
-// x += (2 pi rp[AW_P_DRIFT + i]) p, kick p += rp[AW_P_KICK + i] F. Kicks at
+// x += (2 pi rp.drift[i]) p, kick p += rp.kick[i] F. Kicks at
 // step boundaries are not merged (the same map up to one rounding).
 class LdSplitting {
  public:
   explicit LdSplitting(const arnoldweb::Plan& plan) : kick_first_(plan.method.kick_first) {
     const int s = plan.method.stages;
     const int drifts = kick_first_ ? s : s + 1;
-    for (int i = 0; i < drifts; ++i) drift_.push_back(kTwoPiL * plan.rp[AW_P_DRIFT + i]);
-    for (int i = 0; i <= s; ++i) kick_.push_back(plan.rp[AW_P_KICK + i]);
+    for (int i = 0; i < drifts; ++i) drift_.push_back(kTwoPiL * arnoldweb::detail::params(plan).reals.drift[i]);
+    for (int i = 0; i <= s; ++i) kick_.push_back(arnoldweb::detail::params(plan).reals.kick[i]);
   }
 
   void step(LdState& s) const {
@@ -200,7 +200,7 @@ inline arnoldweb::Scene orbit_scene(const Orbit& o, double duration, double ever
 // The orbit's initial state as the kernels draw it (force computed).
 inline core_d::aw_lstate orbit_start(const arnoldweb::Plan& plan, std::uint64_t index) {
   core_d::aw_lstate s;
-  core_d::aw_initial_state(&s, plan.kernel.initial, index, plan.rp.data(), plan.ip.data());
+  core_d::aw_initial_state(&s, plan.kernel.initial, index, core_d::rp_of(plan), core_d::ip_of(plan));
   core_d::aw_force(&s);
   return s;
 }
@@ -214,7 +214,7 @@ inline std::int64_t steps_per_t(const arnoldweb::Plan& plan) {
 // segmentation when `steps` is the plan's steps_per_segment).
 inline void advance(core_d::aw_lstate* s, const arnoldweb::Plan& plan, std::int64_t n, std::int64_t steps) {
   for (std::int64_t k = 0; k < n; ++k)
-    core_d::aw_segment(s, steps, plan.rp.data(), plan.method.stages, plan.method.kick_first);
+    core_d::aw_segment(s, steps, core_d::rp_of(plan), plan.method.stages, plan.method.kick_first);
 }
 
 // Growth factor of a perturbation of 1e-12 in p_x after t T, in the core (the
@@ -256,7 +256,7 @@ inline DriftStats energy_drift(const Orbit& o, std::int64_t steps, std::int64_t 
   long double st = 0, sd = 0, stt = 0, std_ = 0;
   DriftStats r;
   for (std::int64_t i = 0; i < samples; ++i) {
-    core_d::aw_segment(&s, every, plan.rp.data(), plan.method.stages, plan.method.kick_first);
+    core_d::aw_segment(&s, every, core_d::rp_of(plan), plan.method.stages, plan.method.kick_first);
     const double de = core_d::aw_energy(&s) - e0;
     const long double t = static_cast<long double>(i + 1);
     st += t;

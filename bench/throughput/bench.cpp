@@ -238,13 +238,13 @@ Row measure_baseline(const Options& o, const std::string& which, int ordinal, co
 // ---------------------------------------------------------------- memory
 
 double computed_device_bytes(const Plan& plan, std::uint64_t max_chunk, unsigned group) {
-  // The buffers of the CUDA and OpenCL backends (cuda_backend.cpp allocate()):
+  // The buffers of every backend (backends/ensemble_backend.cpp):
   // parameters, 32- and 64-bit maps, counters, (max, sum) per group.
   const double rs = plan.kernel.precision == Precision::Float ? 4 : 8;
   const double groups = static_cast<double>(max_chunk / group + 2);
   const double npix = static_cast<double>(std::max<std::uint64_t>(plan.npix, 1));
-  return static_cast<double>(plan.rp.size()) * rs + static_cast<double>(plan.ip.size()) * 8 + npix * 12 +
-         4.0 * 512 + 2 * groups * rs;
+  const double params = 8192;  // the two parameter blocks (lib/device/aw_param_blocks.h), a few kB
+  return params + npix * 12 + 4.0 * 512 + 2 * groups * rs;
 }
 
 MemoryRow measure_memory(Backend& b, const Options& o, std::uint64_t n) {

@@ -2,7 +2,7 @@
  *
  * X is uniform on the accessible part of the torus (V(X) < E). Positions
  * where the state cannot have energy E are rejected; each trajectory tries at
- * most AW_I_MAX_ATTEMPTS times (the host refuses energies whose accessible
+ * most ip->max_attempts times (the host refuses energies whose accessible
  * fraction makes failure likely) and reports failure through the returned
  * lane mask. The momentum, by kind (AW_INITIAL_*):
  *   shell:    direction uniform on the sphere, |P| = sqrt(2 (E - V(X)))
@@ -22,17 +22,15 @@
 #define AW_INITIAL_H
 
 #include "aw_model.h"
-#include "aw_params.h"
 #include "aw_rng.h"
 
 /* Fills s (force not yet computed) for the lanes first .. first+AW_LANES-1;
  * returns 1 in every lane that found a state, 0 elsewhere. */
-AW_FN lreal aw_initial_state(aw_lstate* s, int kind, aw_u64 first, AW_CONSTANT real* rp,
-                             AW_CONSTANT aw_i64* ip) {
-  const aw_u64 seed = (aw_u64)ip[AW_I_SEED];
-  const int max_attempts = (int)ip[AW_I_MAX_ATTEMPTS];
-  const real energy = rp[AW_P_ENERGY];
-  AW_CONSTANT real* q = rp + AW_P_INIT;
+AW_FN lreal aw_initial_state(aw_lstate* s, int kind, aw_u64 first, AW_CONSTANT aw_rparams* rp,
+                             AW_CONSTANT aw_iparams* ip) {
+  const aw_u64 seed = (aw_u64)ip->seed;
+  const int max_attempts = (int)ip->max_attempts;
+  const real energy = rp->energy;
   real r0[AW_LANES], r1[AW_LANES], r2[AW_LANES], r3[AW_LANES], r4[AW_LANES], r5[AW_LANES];
   lreal accepted = AW_LSPLAT(AW_R(0.0));
   lreal gx = AW_LSPLAT(AW_R(0.0)), gy = AW_LSPLAT(AW_R(0.0)), gsign = AW_LSPLAT(AW_R(1.0));
@@ -45,8 +43,8 @@ AW_FN lreal aw_initial_state(aw_lstate* s, int kind, aw_u64 first, AW_CONSTANT r
     }
     lreal radius = AW_LOAD_LANES(r0), sb, cb;
     aw_sincos2pi(AW_LOAD_LANES(r1), &sb, &cb);
-    gx = AW_FMA(AW_LSPLAT(q[2]) * radius, cb, AW_LSPLAT(q[0]));
-    gy = AW_FMA(AW_LSPLAT(q[3]) * radius, sb, AW_LSPLAT(q[1]));
+    gx = AW_FMA(AW_LSPLAT(rp->gaussian.sigma_x) * radius, cb, AW_LSPLAT(rp->gaussian.mean_x));
+    gy = AW_FMA(AW_LSPLAT(rp->gaussian.sigma_y) * radius, sb, AW_LSPLAT(rp->gaussian.mean_y));
     gsign = AW_SELECT(AW_LSPLAT(AW_R(1.0)), AW_LSPLAT(AW_R(-1.0)), AW_LOAD_LANES(r2) < AW_R(0.5));
   }
   s->ux = s->uy = s->uz = AW_LSPLAT(AW_R(0.0));
@@ -62,7 +60,7 @@ AW_FN lreal aw_initial_state(aw_lstate* s, int kind, aw_u64 first, AW_CONSTANT r
     lreal ux = AW_LOAD_LANES(r0) - AW_R(0.5);
     lreal uy = AW_LOAD_LANES(r1) - AW_R(0.5);
     lreal uz = AW_LOAD_LANES(r2) - AW_R(0.5);
-    lreal ke = energy - aw_potential(ux, uy, uz); /* kinetic energy left */
+    lreal ke = energy - aw_model_potential(ux, uy, uz, rp); /* kinetic energy left */
     lreal a = AW_LOAD_LANES(r3), b = AW_LOAD_LANES(r4);
     lreal px, py, pz, ok;
     if (kind == AW_INITIAL_GAUSSIAN) {
@@ -75,36 +73,36 @@ AW_FN lreal aw_initial_state(aw_lstate* s, int kind, aw_u64 first, AW_CONSTANT r
       /* a unit direction (dx, dy, dz) */
       lreal dx, dy, dz;
       if (kind == AW_INITIAL_BOX) {
-        lreal sl = AW_FMA(a, AW_LSPLAT(q[3]), AW_LSPLAT(q[2])); /* sin(latitude) */
+        lreal sl = AW_FMA(a, AW_LSPLAT(rp->box.sin_lat_width), AW_LSPLAT(rp->box.sin_lat0)); /* sin(latitude) */
         lreal cl = AW_SQRT((AW_R(1.0) - sl) * (AW_R(1.0) + sl));
         lreal slon, clon;
-        aw_sincos2pi(AW_FMA(b, AW_LSPLAT(q[1]), AW_LSPLAT(q[0])), &slon, &clon);
+        aw_sincos2pi(AW_FMA(b, AW_LSPLAT(rp->box.lon_width), AW_LSPLAT(rp->box.lon0)), &slon, &clon);
         dx = cl * clon;
         dy = cl * slon;
         dz = sl;
       } else {
         /* shell: the whole sphere; cap: cos(theta) in [cos(radius), 1] about c */
-        lreal ct = (kind == AW_INITIAL_CAP) ? AW_R(1.0) - a * (AW_R(1.0) - q[9])
+        lreal ct = (kind == AW_INITIAL_CAP) ? AW_R(1.0) - a * (AW_R(1.0) - rp->cap.cos_radius)
                                             : AW_R(2.0) * a - AW_R(1.0);
         lreal st = AW_SQRT((AW_R(1.0) - ct) * (AW_R(1.0) + ct));
         lreal sphi, cphi;
         aw_sincos2pi(b, &sphi, &cphi);
         if (kind == AW_INITIAL_CAP) {
           lreal t1 = st * cphi, t2 = st * sphi;
-          dx = AW_FMA(ct, AW_LSPLAT(q[0]), AW_FMA(t1, AW_LSPLAT(q[3]), t2 * q[6]));
-          dy = AW_FMA(ct, AW_LSPLAT(q[1]), AW_FMA(t1, AW_LSPLAT(q[4]), t2 * q[7]));
-          dz = AW_FMA(ct, AW_LSPLAT(q[2]), AW_FMA(t1, AW_LSPLAT(q[5]), t2 * q[8]));
+          AW_CONSTANT aw_cap* q = &rp->cap;
+          dx = AW_FMA(ct, AW_LSPLAT(q->c[0]), AW_FMA(t1, AW_LSPLAT(q->e1[0]), t2 * q->e2[0]));
+          dy = AW_FMA(ct, AW_LSPLAT(q->c[1]), AW_FMA(t1, AW_LSPLAT(q->e1[1]), t2 * q->e2[1]));
+          dz = AW_FMA(ct, AW_LSPLAT(q->c[2]), AW_FMA(t1, AW_LSPLAT(q->e1[2]), t2 * q->e2[2]));
         } else {
           dx = st * cphi;
           dy = st * sphi;
           dz = ct;
         }
       }
-      lreal pm = AW_SQRT(AW_R(2.0) * AW_SELECT(AW_LSPLAT(AW_R(0.0)), ke, ke > AW_R(0.0)));
+      lreal pm = aw_model_speed(ke, dx, dy, dz, rp, &ok);
       px = pm * dx;
       py = pm * dy;
       pz = pm * dz;
-      ok = AW_SELECT(AW_LSPLAT(AW_R(0.0)), AW_LSPLAT(AW_R(1.0)), ke > AW_R(0.0));
     }
     /* take the candidate where it is valid and nothing was taken yet */
 #define AW_TAKE_ (ok != AW_R(0.0)) & (accepted == AW_R(0.0))

@@ -1,8 +1,10 @@
-/* arnoldweb portable device core: what the host passes to every kernel.
+/* arnoldweb portable device core: what the host and every kernel agree on:
+ * the feature bits, the initial kinds, the sizes of the parameter blocks
+ * (aw_param_blocks.h), the counter slots and the state records. Plain macros:
+ * the host includes this header as it is.
  *
- * This header is included by the device core (all three dialects) and by the
- * host (lib/src), so both agree on the layout of the two parameter buffers,
- * the feature bits and the counter slots. Plain macros only.
+ * A new effect adds a bit and its counters here, and its fields in
+ * aw_param_blocks.h.
  */
 #ifndef AW_PARAMS_H
 #define AW_PARAMS_H
@@ -30,44 +32,11 @@
 #define AW_INITIAL_BOX 2      /* direction uniform in a longitude/latitude box */
 #define AW_INITIAL_GAUSSIAN 3 /* p_x, p_y Gaussian, p_z from the energy, random sign */
 
-/* -------------------------------------------------- real parameters (rp) */
+/* ------------------------------------------------------ parameter blocks
+ * The structs the host fills and every kernel reads: aw_param_blocks.h. */
 #define AW_MAX_STAGES 16
-#define AW_P_ENERGY 0            /* E */
-#define AW_P_ENERGY_LIMIT 1      /* flag when |dE| exceeds this */
-#define AW_P_INJECT_VALUE 2      /* test hook: value added to p_x (NaN, Inf) */
-#define AW_P_KICK_MERGED 3       /* (b_last + b_0) h, for back-to-back steps */
-#define AW_P_DRIFT 4             /* a_i h / 2pi (turns per unit momentum), i = 0..16 */
-#define AW_P_KICK (AW_P_DRIFT + AW_MAX_STAGES + 1) /* b_i h, i = 0..16 */
-/* Initial distribution (AW_P_INIT + ...):
- *   cap:      c (3), e1 (3), e2 (3): orthonormal frame with c the centre; 9: cos(radius)
- *   box:      0: first longitude (turns), 1: longitude width (turns),
- *             2: sin(first latitude), 3: sin(last latitude) - sin(first latitude)
- *   gaussian: 0, 1: mean p_x, p_y; 2, 3: sigma of p_x, p_y */
-#define AW_P_INIT (AW_P_KICK + AW_MAX_STAGES + 1)
-/* A square region in gnomonic projection about a direction (zoom, confinement):
- * c (3), e1 (3), e2 (3) orthonormal frame; 9: half-width w = tan(half-angle).
- * d is inside when d.c > 0 and |d.e1| <= w d.c and |d.e2| <= w d.c. */
-#define AW_REGION_SIZE 10
-#define AW_P_ZOOM (AW_P_INIT + AW_REGION_SIZE)
-#define AW_P_CONFINE (AW_P_ZOOM + AW_REGION_SIZE)
-#define AW_P_COUNT (AW_P_CONFINE + AW_REGION_SIZE)
-
-/* ----------------------------------------------- integer parameters (ip) */
-#define AW_I_SEED 0              /* Philox key */
-#define AW_I_STEPS_PER_SEGMENT 1 /* steps between two samples */
-#define AW_I_SEGMENTS 2          /* samples per averaging window */
-#define AW_I_WINDOWS 3           /* averaging windows per trajectory */
-#define AW_I_NSIDE 4             /* HEALPix resolution of the velocity map */
-#define AW_I_MAX_ATTEMPTS 5      /* rejection-sampling bound for initial states */
-#define AW_I_STAGES 6            /* force evaluations per step */
-#define AW_I_KICK_FIRST 7        /* 1: kick-drift-kick with merged kicks; 0: drift first */
-#define AW_I_INJECT_INDEX 8      /* test hook: the trajectory to poison */
-#define AW_I_INITIAL 9           /* AW_INITIAL_* (the C++ backend reads it here) */
-#define AW_I_ZOOM_RESOLUTION 10  /* zoom histogram: R x R bins */
-#define AW_I_FRAMES 11           /* number of frames F (1 without AW_F_FRAMES) */
+#define AW_MAX_MODEL_PARAMS 64
 #define AW_MAX_FRAMES 64
-#define AW_I_FRAME_BOUNDS 12     /* F + 1 window indices: frame k = windows [b_k, b_k+1) */
-#define AW_I_COUNT (AW_I_FRAME_BOUNDS + AW_MAX_FRAMES + 1)
 
 /* ------------------------------------------------------- histograms
  * One buffer of counts: F velocity maps of 12 nside^2 pixels (RING), frame

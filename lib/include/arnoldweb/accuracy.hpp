@@ -102,13 +102,14 @@ struct AccuracyReport {
 AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tolerance,
                                const PilotOptions& options = {});
 
-// make_plan for a scene with integrator.step = "auto": the pilot runs on
-// `pilot` and chooses the step (and the method, when the scene does not name
-// integrator.method itself) for integrator.tolerance; the plan is then made
-// for that method and step, and Plan::auto_step records the choice. A scene
-// with a numeric step gives make_plan(scene). make_plan(scene) itself calls
-// this with the cpu backend for "auto" scenes (in portable math the cpu
-// backend computes the very bits every device computes).
-Plan make_plan(const Scene& scene, Backend& pilot, const PilotOptions& options = {});
+// The stage before planning for a scene with integrator.step = "auto": a pilot
+// ensemble on `pilot` chooses the step (and the method, when the scene does
+// not name integrator.method itself) for integrator.tolerance. Returns the
+// scene with that method and step, the choice recorded in Scene::auto_step;
+// a scene with a numeric step comes back as it is. In portable math every
+// device computes the same bits, so the pilot may run on any of them (the
+// arnoldweb command uses the cpu backend). Throws SceneError when no method
+// meets the tolerance.
+Scene resolve_step(const Scene& scene, Backend& pilot, const PilotOptions& options = {});
 
 }  // namespace arnoldweb

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,9 +30,15 @@ struct Job {
   const Plan& main() const { return parts.front().plan; }
 };
 
+// What resolves integrator.step = "auto" in a scene before it is planned
+// (e.g. resolve_step with a pilot device, accuracy.hpp).
+using StepResolver = std::function<Scene(const Scene&)>;
+
 // Plans the scene and every panel (a panel is the scene's text read again with
-// the panel's overrides, then the scene's own overrides). Throws SceneError.
-Job plan_job(const Scene& scene);
+// the panel's overrides, then the scene's own overrides). A part whose step is
+// "auto" is resolved with `resolve` first (without one it is refused). Throws
+// SceneError.
+Job plan_job(const Scene& scene, const StepResolver& resolve = {});
 
 struct JobResult {
   std::vector<Result> results;  // one per part that ran, in order

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,10 @@
 #include "arnoldweb/scene.hpp"
 
 namespace arnoldweb {
+
+namespace detail {
+struct KernelParams;
+}
 
 // What a kernel is compiled for. Two plans with equal KernelConfig share a
 // compiled program.
@@ -21,6 +26,7 @@ struct KernelConfig {
   int stages = 0;
   bool kick_first = true;
   int initial = 0;  // AW_INITIAL_*
+  int model = 0;    // AW_MODEL_* (lib/device/models/aw_models.h)
 
   // -D options for the OpenCL and CUDA compilers (without lanes).
   std::string defines() const;
@@ -41,25 +47,6 @@ struct StepGuard {
   bool warned() const { return value > advised; }
 };
 StepGuard step_guard(double energy, double step, double average, double energy_every);
-
-// How integrator.step = "auto" was resolved (make_plan; accuracy.hpp). The
-// plan's scene then holds the chosen method and step, so that the scene as run
-// reproduces the run without a pilot.
-struct AutoStep {
-  bool used = false;               // the scene asked for step = "auto"
-  double tolerance = 0;            // integrator.tolerance: target max|dE|
-  double safety = 0;               // the pilot's max|dE| x safety <= tolerance
-  bool method_chosen = false;      // the pilot chose the method too (integrator.method not written)
-  std::string method;              // the method chosen (or written)
-  double step = 0;                 // the step chosen, in T
-  double predicted_max = 0;        // pilot max|dE| predicted by the fit at that step
-  double pilot_max = -1;           // measured at that method and step on the pilot ensemble
-  double pilot_median = -1;
-  std::uint64_t pilot_trajectories = 0;
-  double pilot_duration = 0;       // in T
-  std::string pilot_device;        // where the pilot ran
-  double pilot_seconds = 0;
-};
 
 struct Plan {
   Scene scene;
@@ -82,23 +69,19 @@ struct Plan {
   double accessible_fraction = 1;       // of the torus, for the initial states
   StepGuard guard;
   std::vector<std::string> warnings;
-  AutoStep auto_step;                   // integrator.step = "auto": the choice and its pilot
 
-  // Kernel parameter buffers (layout: lib/device/aw_params.h).
-  std::vector<double> rp;
-  std::vector<std::int64_t> ip;
+  // The kernels' parameter blocks (lib/device/aw_param_blocks.h), filled by
+  // make_plan; read by the backends (lib/src/plan/kernel_params.hpp).
+  std::shared_ptr<const detail::KernelParams> params;
 
   std::vector<std::string> effects() const { return feature_names(kernel.features); }
 };
 
-// Validate the scene as a whole and build the plan. Throws SceneError for
-// values that are wrong together (average not a multiple of the step, ...),
-// naming the key and its position. For integrator.step = "auto" the step (and
-// the method, unless the scene names one) is chosen by a pilot ensemble on the
-// cpu backend; make_plan(scene, backend) in accuracy.hpp runs it elsewhere.
+// Validate the scene as a whole and build the plan: a pure function of the
+// scene (it opens no device and runs nothing). Throws SceneError for values
+// that are wrong together (average not a multiple of the step, ...), naming
+// the key and where its value came from. integrator.step = "auto" must be
+// resolved first (resolve_step, accuracy.hpp).
 Plan make_plan(const Scene& scene);
-
-// Fraction of the torus where V(X) < E (Monte Carlo with a fixed seed).
-double accessible_fraction(double energy);
 
 }  // namespace arnoldweb

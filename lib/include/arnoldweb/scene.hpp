@@ -27,6 +27,25 @@ struct SourcePos {
   int set_index = 0;  // 1-based index into Scene::overrides if --set gave the value
 };
 
+// How integrator.step = "auto" was resolved (resolve_step, accuracy.hpp): the
+// scene then holds the chosen method and step, so that the scene as run
+// reproduces the run without a pilot, and this record says how they were chosen.
+struct AutoStep {
+  bool used = false;               // the scene asked for step = "auto"
+  double tolerance = 0;            // integrator.tolerance: target max|dE|
+  double safety = 0;               // the pilot's max|dE| x safety <= tolerance
+  bool method_chosen = false;      // the pilot chose the method too (integrator.method not written)
+  std::string method;              // the method chosen (or written)
+  double step = 0;                 // the step chosen, in T
+  double predicted_max = 0;        // pilot max|dE| predicted by the fit at that step
+  double pilot_max = -1;           // measured at that method and step on the pilot ensemble
+  double pilot_median = -1;
+  std::uint64_t pilot_trajectories = 0;
+  double pilot_duration = 0;       // in T
+  std::string pilot_device;        // where the pilot ran
+  double pilot_seconds = 0;
+};
+
 struct Scene {
   // [model]
   double energy = 15.0;  // E; effective perturbation 2/E
@@ -93,6 +112,7 @@ struct Scene {
   std::vector<Panel> panels;
 
   // Provenance
+  AutoStep auto_step;                      // how "auto" was resolved (resolve_step), if it was
   std::string file;                        // path it was read from ("<string>" if none)
   std::string text;                        // the TOML text it was read from (panels re-read it)
   std::map<std::string, SourcePos> where;  // dotted key -> position in the file

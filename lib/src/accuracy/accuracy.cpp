@@ -12,7 +12,7 @@
 // the pilot ensemble; if it misses, the measurement joins the fit and the
 // search repeats.
 #include "arnoldweb/accuracy.hpp"
-#include "plan/scene_checks.hpp"
+#include "plan/checks.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -400,8 +400,8 @@ AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tole
   return rep;
 }
 
-Plan make_plan(const Scene& scene, Backend& pilot, const PilotOptions& options) {
-  if (!scene.step_auto) return make_plan(scene);
+Scene resolve_step(const Scene& scene, Backend& pilot, const PilotOptions& options) {
+  if (!scene.step_auto) return scene;
   PilotOptions o = options;
   const bool method_written = written(scene, "integrator.method");
   if (method_written) o.methods = {scene.method};
@@ -414,8 +414,7 @@ Plan make_plan(const Scene& scene, Backend& pilot, const PilotOptions& options) 
   resolved.step_auto = false;
   resolved.method = rep.best.method;
   resolved.step = rep.best.step;
-  Plan p = make_plan(resolved);
-  AutoStep& a = p.auto_step;
+  AutoStep& a = resolved.auto_step;
   a.used = true;
   a.tolerance = scene.tolerance;
   a.safety = rep.safety;
@@ -429,7 +428,7 @@ Plan make_plan(const Scene& scene, Backend& pilot, const PilotOptions& options) 
   a.pilot_duration = rep.pilot_duration;
   a.pilot_device = rep.device;
   a.pilot_seconds = rep.pilot_seconds;
-  return p;
+  return resolved;
 }
 
 }  // namespace arnoldweb

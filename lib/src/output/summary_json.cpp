@@ -90,8 +90,8 @@ std::string summary_json(const Plan& plan, const Result& r, const std::vector<st
                {"zoom_resolution", plan.zoom_resolution}};
   j["scene"] = json::parse(plan.scene.to_json());  // every key, from the key table
   j["scene_toml"] = plan.scene.to_toml();
-  if (plan.auto_step.used) {  // integrator.step = "auto": the choice and its pilot (accuracy.hpp)
-    const AutoStep& a = plan.auto_step;
+  if (plan.scene.auto_step.used) {  // integrator.step = "auto": the choice and its pilot (accuracy.hpp)
+    const AutoStep& a = plan.scene.auto_step;
     j["auto_step"] = {{"tolerance", a.tolerance},
                       {"safety", a.safety},
                       {"method", a.method},

@@ -3,10 +3,18 @@
 
 namespace arnoldweb {
 
-Job plan_job(const Scene& scene) {
+namespace {
+
+Plan plan_resolved(const Scene& scene, const StepResolver& resolve) {
+  return make_plan(scene.step_auto && resolve ? resolve(scene) : scene);
+}
+
+}  // namespace
+
+Job plan_job(const Scene& scene, const StepResolver& resolve) {
   Job job;
   JobPart main;
-  main.plan = make_plan(scene);
+  main.plan = plan_resolved(scene, resolve);
   job.parts.push_back(std::move(main));
   for (const Scene::Panel& panel : scene.panels) {
     // the panel's overrides, then the user's (so --set applies to every panel)
@@ -24,7 +32,7 @@ Job plan_job(const Scene& scene) {
     part.name = panel.name;
     part.title = panel.title;
     part.subdir = "panel-" + panel.name;
-    part.plan = make_plan(s);
+    part.plan = plan_resolved(s, resolve);
     job.parts.push_back(std::move(part));
   }
   return job;

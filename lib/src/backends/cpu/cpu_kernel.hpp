@@ -1,6 +1,7 @@
-// arnoldweb: the cpu backend's kernels. The device core is compiled four times
-// as C++ (double/float x portable/native math), each copy in its own
-// namespace; cpu_backend.cpp picks one per plan.
+// arnoldweb: the cpu backend's kernels. The device core is compiled ahead of
+// time as C++ in several variants (model x double/float x portable/native
+// math, cpu_kernels.cmake), each in its own namespace; cpu_device.cpp picks
+// one per plan.
 #pragma once
 
 #include <cstdint>
@@ -15,22 +16,21 @@ struct CpuChunk {
   std::uint32_t features = 0;
   int stages = 0;
   int kick_first = 1;
+  int initial = 0;
   std::uint64_t first = 0, end = 0;  // trajectories [first, end)
-  const void* rp = nullptr;          // AW_P_COUNT reals of the variant's precision
-  const std::int64_t* ip = nullptr;  // AW_I_COUNT
-  std::uint32_t* map = nullptr;      // 12 nside^2 counts
+  const void* rp = nullptr;          // aw_rparams of the variant's precision
+  const void* ip = nullptr;          // aw_iparams
+  std::uint32_t* map = nullptr;      // the histograms' 32-bit counts
   std::uint32_t* counters = nullptr; // AW_C_COUNT
   void* initial_r = nullptr;         // reals of the variant's precision
   void* final_r = nullptr;
   std::int64_t* final_i = nullptr;
-  double* group_stats = nullptr;     // 2 per block
+  void* group_stats = nullptr;       // 2 reals of the variant's precision per block
 };
 
 using CpuKernel = void (*)(const CpuChunk&);
 
-void cpu_chunk_double_portable(const CpuChunk& c);
-void cpu_chunk_double_native(const CpuChunk& c);
-void cpu_chunk_float_portable(const CpuChunk& c);
-void cpu_chunk_float_native(const CpuChunk& c);
+// The variant for (model, precision, math), or null if this build has none.
+CpuKernel cpu_kernel(int model, bool single_precision, bool native_math);
 
 }  // namespace arnoldweb::detail

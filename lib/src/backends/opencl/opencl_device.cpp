@@ -1,4 +1,4 @@
-// arnoldweb: the OpenCL backend, through Boost.Compute. Kernels are built at
+// arnoldweb: the OpenCL device, through Boost.Compute. Kernels are built at
 // run time from the embedded sources with the plan's -D options and cached per
 // context. CPU devices (PoCL) run AW_LANES trajectories per work-item on
 // explicit vector types, which PoCL vectorises; GPUs run one per work-item.
@@ -12,6 +12,7 @@
 #include "arnoldweb/errors.hpp"
 #include "aw_params.h"
 #include "backends/backends.hpp"
+#include "backends/compute_device.hpp"
 #include "backends/kernel_sources.hpp"
 
 namespace compute = boost::compute;
@@ -60,149 +61,138 @@ const std::string& ensemble_source() {
 
 std::mutex build_mutex;  // program_cache is not thread-safe
 
-class OpenclBackend final : public Backend {
+class ClMemory final : public DeviceMemory {
  public:
-  explicit OpenclBackend(int index) {
+  ClMemory(compute::buffer b, std::size_t bytes) : DeviceMemory(bytes), buffer(std::move(b)) {}
+  compute::buffer buffer;
+};
+
+const compute::buffer& cl(const DeviceMemory& m) { return static_cast<const ClMemory&>(m).buffer; }
+
+class OpenclDevice final : public ComputeDevice {
+ public:
+  explicit OpenclDevice(int index) {
     auto devs = cl_devices();
     device_ = devs.at(static_cast<std::size_t>(index));
     info_ = describe(device_, index);
     try {
       context_ = compute::context(device_);
       queue_ = compute::command_queue(context_, device_);
+      dummy_ = compute::buffer(context_, 64);
     } catch (const compute::opencl_error& e) {
       rethrow(info_, "clCreateContext", e);
     }
   }
 
   const DeviceInfo& info() const override { return info_; }
+  std::uint64_t max_allocation() const override {
+    return device_.get_info<cl_ulong>(CL_DEVICE_MAX_MEM_ALLOC_SIZE);
+  }
 
-  void prepare(const Plan& plan, std::uint64_t max_chunk) override {
-    float_ = plan.kernel.precision == Precision::Float;
-    require_fp64(plan, info_);
-    check_device_memory(plan, info_, max_chunk, device_.get_info<cl_ulong>(CL_DEVICE_MAX_MEM_ALLOC_SIZE));
-    features_ = plan.kernel.features;
-    hist_size_ = plan.hist_size;  // every histogram: frames of the map, then the zoom
+  void compile(const KernelConfig& config) override {
+    const bool fl = config.precision == Precision::Float;
     lanes_ = info_.is_cpu ? 8 : 1;
     if (const char* env = std::getenv("ARNOLDWEB_OPENCL_LANES")) lanes_ = std::atoi(env);
     if (lanes_ != 1 && lanes_ != 2 && lanes_ != 4 && lanes_ != 8 && lanes_ != 16)
       throw DeviceError(info_.id, "", 0, "ARNOLDWEB_OPENCL_LANES must be 1, 2, 4, 8 or 16");
-    options_ = plan.kernel.defines() + " -DAW_LANES=" + std::to_string(lanes_);
-    if (float_ && (device_.get_info<cl_device_fp_config>(CL_DEVICE_SINGLE_FP_CONFIG) &
-                   CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT))
+    real_size_ = fl ? sizeof(float) : sizeof(double);
+    options_ = config.defines() + " -DAW_LANES=" + std::to_string(lanes_);
+    if (fl && (device_.get_info<cl_device_fp_config>(CL_DEVICE_SINGLE_FP_CONFIG) & CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT))
       options_ += " -cl-fp32-correctly-rounded-divide-sqrt";
     // extra compiler options, for experiments and diagnostics (like ARNOLDWEB_NVRTC_OPTIONS)
     if (const char* extra = std::getenv("ARNOLDWEB_OPENCL_OPTIONS")) options_ += std::string(" ") + extra;
     build();
-    const std::size_t rs = float_ ? sizeof(float) : sizeof(double);
     try {
       wg_ = info_.is_cpu ? 16 : 128;
       wg_ = std::min<std::size_t>(wg_, ensemble_.get_work_group_info<std::size_t>(device_, CL_KERNEL_WORK_GROUP_SIZE));
       wg_ = floor_pow2(std::max<std::size_t>(wg_, 1));
-      const std::size_t max_groups = (max_chunk / lanes_ + wg_) / wg_ + 1;
-      std::vector<double> rpd = plan.rp;
-      std::vector<float> rpf(plan.rp.begin(), plan.rp.end());
-      rp_ = compute::buffer(context_, rpd.size() * rs, compute::buffer::read_only);
-      queue_.enqueue_write_buffer(rp_, 0, rpd.size() * rs,
-                                  float_ ? static_cast<const void*>(rpf.data()) : static_cast<const void*>(rpd.data()));
-      ip_ = compute::buffer(context_, plan.ip.size() * 8, compute::buffer::read_only);
-      queue_.enqueue_write_buffer(ip_, 0, plan.ip.size() * 8, plan.ip.data());
-      const std::size_t npix = std::max<std::uint64_t>(hist_size_, 1);
-      map32_ = zeroed(npix * 4);
-      map64_ = zeroed(npix * 8);
-      counters_ = compute::buffer(context_, AW_C_COUNT * 4);
-      stats_ = compute::buffer(context_, 2 * max_groups * rs);
-      dummy_ = compute::buffer(context_, 64);
-      initial_ = (features_ & AW_F_INITIAL_STATES) ? compute::buffer(context_, max_chunk * AW_STATE_REALS * rs) : dummy_;
-      final_r_ = (features_ & AW_F_FINAL_STATES) ? compute::buffer(context_, max_chunk * AW_STATE_REALS * rs) : dummy_;
-      final_i_ = (features_ & AW_F_FINAL_STATES) ? compute::buffer(context_, max_chunk * AW_STATE_INTS * 8) : dummy_;
-      queue_.finish();
+    } catch (const compute::opencl_error& e) {
+      rethrow(info_, "clGetKernelWorkGroupInfo", e);
+    }
+  }
+  std::string kernel_description() const override { return "OpenCL C: " + options_; }
+
+  std::unique_ptr<DeviceMemory> allocate(std::size_t bytes, const char*) override {
+    try {
+      return std::make_unique<ClMemory>(compute::buffer(context_, std::max<std::size_t>(bytes, 1)), bytes);
     } catch (const compute::opencl_error& e) {
       rethrow(info_, "clCreateBuffer", e);
     }
   }
-
-  void run_chunk(std::uint64_t first, std::uint64_t count, ChunkOutput& out) override {
-    const std::size_t rs = float_ ? sizeof(float) : sizeof(double);
-    const std::size_t items = (count + lanes_ - 1) / lanes_;
-    const std::size_t global = (items + wg_ - 1) / wg_ * wg_;
-    const std::size_t groups = global / wg_;
-    const char* call = "clEnqueueNDRangeKernel";
+  void upload(DeviceMemory& to, const void* from, std::size_t bytes) override {
     try {
-      out.counters.assign(AW_C_COUNT, 0);
-      call = "clEnqueueWriteBuffer";
-      queue_.enqueue_write_buffer(counters_, 0, AW_C_COUNT * 4, out.counters.data());
-      compute::kernel& k = ensemble_;
-      k.set_arg(0, static_cast<cl_ulong>(first));
-      k.set_arg(1, static_cast<cl_ulong>(first + count));
-      k.set_arg(2, rp_);
-      k.set_arg(3, ip_);
-      k.set_arg(4, map32_);
-      k.set_arg(5, counters_);
-      k.set_arg(6, initial_);
-      k.set_arg(7, final_r_);
-      k.set_arg(8, final_i_);
-      k.set_arg(9, stats_);
-      k.set_arg(10, 2 * wg_ * rs, nullptr);
-      call = "clEnqueueNDRangeKernel";
-      queue_.enqueue_1d_range_kernel(k, 0, global, wg_);
-      if (hist_size_) {
-        fold_.set_arg(0, map64_);
-        fold_.set_arg(1, map32_);
-        fold_.set_arg(2, static_cast<cl_ulong>(hist_size_));
-        const std::size_t fg = (hist_size_ + 255) / 256 * 256;
-        queue_.enqueue_1d_range_kernel(fold_, 0, fg, 0);
-      }
-      call = "clEnqueueReadBuffer";
-      queue_.enqueue_read_buffer(counters_, 0, AW_C_COUNT * 4, out.counters.data());
-      read_reals(stats_, 2 * groups, out.group_stats);
-      if (features_ & AW_F_INITIAL_STATES) read_reals(initial_, count * AW_STATE_REALS, out.initial_r);
-      if (features_ & AW_F_FINAL_STATES) {
-        read_reals(final_r_, count * AW_STATE_REALS, out.final_r);
-        out.final_i.assign(count * AW_STATE_INTS, 0);
-        queue_.enqueue_read_buffer(final_i_, 0, count * AW_STATE_INTS * 8, out.final_i.data());
-      }
-      call = "clFinish";
-      queue_.finish();
+      if (bytes) queue_.enqueue_write_buffer(cl(to), 0, bytes, from);
     } catch (const compute::opencl_error& e) {
-      rethrow(info_, call, e);
+      rethrow(info_, "clEnqueueWriteBuffer", e);
     }
   }
-
-  std::vector<std::uint64_t> read_histograms() override {
-    std::vector<std::uint64_t> m(hist_size_);
+  void download(const DeviceMemory& from, void* to, std::size_t bytes) override {
     try {
-      if (hist_size_) queue_.enqueue_read_buffer(map64_, 0, hist_size_ * 8, m.data());
+      if (bytes) queue_.enqueue_read_buffer(cl(from), 0, bytes, to);
     } catch (const compute::opencl_error& e) {
       rethrow(info_, "clEnqueueReadBuffer", e);
     }
-    return m;
+  }
+  void zero(DeviceMemory& m) override {
+    std::vector<unsigned char> z(m.bytes(), 0);
+    upload(m, z.data(), z.size());
+  }
+
+  LaunchShape shape(std::uint64_t count) const override {
+    LaunchShape s;
+    const std::uint64_t items = (count + lanes_ - 1) / lanes_;
+    s.items = (items + wg_ - 1) / wg_ * wg_;
+    s.group_size = wg_;
+    s.groups = s.items / wg_;
+    return s;
+  }
+
+  void launch_ensemble(std::uint64_t first, std::uint64_t count, const LaunchShape& s,
+                       const EnsembleBuffers& b) override {
+    auto arg = [&](DeviceMemory* m) -> const compute::buffer& { return m ? cl(*m) : dummy_; };
+    try {
+      compute::kernel& k = ensemble_;
+      k.set_arg(0, static_cast<cl_ulong>(first));
+      k.set_arg(1, static_cast<cl_ulong>(first + count));
+      k.set_arg(2, arg(b.reals));
+      k.set_arg(3, arg(b.ints));
+      k.set_arg(4, arg(b.counts));
+      k.set_arg(5, arg(b.counters));
+      k.set_arg(6, arg(b.initial_r));
+      k.set_arg(7, arg(b.final_r));
+      k.set_arg(8, arg(b.final_i));
+      k.set_arg(9, arg(b.group_stats));
+      k.set_arg(10, 2 * wg_ * real_size_, nullptr);
+      queue_.enqueue_1d_range_kernel(k, 0, s.items, wg_);
+    } catch (const compute::opencl_error& e) {
+      rethrow(info_, "clEnqueueNDRangeKernel", e);
+    }
+  }
+
+  void launch_fold(DeviceMemory& total, DeviceMemory& part, std::uint64_t n) override {
+    try {
+      fold_.set_arg(0, cl(total));
+      fold_.set_arg(1, cl(part));
+      fold_.set_arg(2, static_cast<cl_ulong>(n));
+      queue_.enqueue_1d_range_kernel(fold_, 0, (n + 255) / 256 * 256, 0);
+    } catch (const compute::opencl_error& e) {
+      rethrow(info_, "clEnqueueNDRangeKernel", e);
+    }
+  }
+
+  void finish(const std::string&) override {
+    try {
+      queue_.finish();
+    } catch (const compute::opencl_error& e) {
+      rethrow(info_, "clFinish", e);
+    }
   }
 
   std::uint64_t preferred_chunk() const override {
     return static_cast<std::uint64_t>(info_.compute_units) * wg_ * lanes_ * (info_.is_cpu ? 4 : 16);
   }
 
-  std::string kernel_description() const override { return "OpenCL C: " + options_; }
-
  private:
-  compute::buffer zeroed(std::size_t bytes) {
-    compute::buffer b(context_, bytes);
-    std::vector<unsigned char> z(bytes, 0);
-    queue_.enqueue_write_buffer(b, 0, bytes, z.data());
-    return b;
-  }
-
-  void read_reals(const compute::buffer& b, std::size_t n, std::vector<double>& out) {
-    out.assign(n, 0.0);
-    if (!float_) {
-      queue_.enqueue_read_buffer(b, 0, n * 8, out.data());
-      return;
-    }
-    std::vector<float> f(n);
-    queue_.enqueue_read_buffer(b, 0, n * 4, f.data());
-    std::copy(f.begin(), f.end(), out.begin());
-  }
-
   void build() {
     std::lock_guard<std::mutex> lock(build_mutex);
     auto cache = compute::program_cache::get_global_cache(context_);
@@ -243,11 +233,9 @@ class OpenclBackend final : public Backend {
   compute::context context_;
   compute::command_queue queue_;
   compute::kernel ensemble_, fold_;
-  compute::buffer rp_, ip_, map32_, map64_, counters_, stats_, dummy_, initial_, final_r_, final_i_;
+  compute::buffer dummy_;
   std::string options_;
-  bool float_ = false;
-  std::uint32_t features_ = 0;
-  std::uint64_t hist_size_ = 0;
+  std::size_t real_size_ = 8;
   int lanes_ = 1;
   std::size_t wg_ = 1;
 };
@@ -271,7 +259,7 @@ std::vector<DeviceInfo> opencl_devices(std::vector<std::string>& problems) {
 }
 
 std::unique_ptr<Backend> make_opencl_backend(int index) {
-  return std::make_unique<OpenclBackend>(index);
+  return make_ensemble_backend(std::make_unique<OpenclDevice>(index));
 }
 
 }  // namespace arnoldweb::detail

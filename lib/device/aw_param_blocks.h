@@ -1,0 +1,82 @@
+/* arnoldweb portable device core: the parameter blocks the host fills and
+ * every kernel reads (through a pointer to constant memory).
+ *
+ * Each block is a struct whose members are all of one type (aw_rparams:
+ * real, aw_iparams: aw_i64), so its layout is an array of that type in every
+ * dialect: the host fills the double block and converts it to float element
+ * by element for float kernels. The host includes this header twice, with
+ * `real` = double and float (lib/src/plan/kernel_params.hpp);
+ * tests/plan/test_kernel_params.cpp checks sizes and offsets on the host and,
+ * through PoCL, in OpenCL C.
+ *
+ * Needs `real`, `aw_i64` and `aw_u32` (aw_dialect.h, or the host's own).
+ */
+#ifndef AW_PARAM_BLOCKS_H
+#define AW_PARAM_BLOCKS_H
+
+#include "aw_params.h"
+
+/* ---------------------------------------------------------- configuration
+ * What a kernel is compiled for. OpenCL and CUDA build it from their -D
+ * options (compile-time constants everywhere); the C++ backend passes the
+ * plan's values at run time. */
+typedef struct {
+  aw_u32 features;  /* AW_F_* */
+  int stages;       /* force evaluations per step */
+  int kick_first;   /* 1: kick-drift-kick with merged kicks; 0: drift first */
+  int initial;      /* AW_INITIAL_* */
+} aw_config;
+
+/* ------------------------------------------------------ real parameters */
+/* A square region in gnomonic projection about a direction (zoom,
+ * confinement): c the centre, e1 east, e2 north (an orthonormal frame) and the
+ * half-width w = tan(half-angle). d is inside when d.c > 0, |d.e1| <= w d.c
+ * and |d.e2| <= w d.c. */
+typedef struct {
+  real c[3], e1[3], e2[3];
+  real half_width;
+} aw_region;
+
+/* The non-uniform initial distributions (ensemble.initial). */
+typedef struct {
+  real c[3], e1[3], e2[3]; /* frame of the cap's centre */
+  real cos_radius;
+} aw_cap;
+typedef struct {
+  real lon0, lon_width;      /* turns */
+  real sin_lat0, sin_lat_width;
+} aw_box;
+typedef struct {
+  real mean_x, mean_y, sigma_x, sigma_y;
+} aw_gaussian;
+
+typedef struct {
+  real energy;        /* E of every trajectory */
+  real energy_limit;  /* flag when |dE| exceeds this */
+  real inject_value;  /* test hook: value added to p_x (NaN, Inf) */
+  real kick_merged;   /* (b_last + b_0) h, for back-to-back steps */
+  real drift[AW_MAX_STAGES + 1]; /* a_i h / 2pi (turns per unit momentum) */
+  real kick[AW_MAX_STAGES + 1];  /* b_i h */
+  aw_cap cap;
+  aw_box box;
+  aw_gaussian gaussian;
+  aw_region zoom;
+  aw_region confine;
+  real model[AW_MAX_MODEL_PARAMS]; /* the model's own (models/aw_models.h) */
+} aw_rparams;
+
+/* --------------------------------------------------- integer parameters */
+typedef struct {
+  aw_i64 seed;              /* Philox key */
+  aw_i64 steps_per_segment; /* steps between two samples */
+  aw_i64 segments;          /* samples per averaging window */
+  aw_i64 windows;           /* averaging windows per trajectory */
+  aw_i64 nside;             /* HEALPix resolution of the velocity map */
+  aw_i64 max_attempts;      /* rejection-sampling bound for initial states */
+  aw_i64 inject_index;      /* test hook: the trajectory to poison */
+  aw_i64 zoom_resolution;   /* zoom histogram: R x R bins */
+  aw_i64 frames;            /* number of frames F (1 without AW_F_FRAMES) */
+  aw_i64 frame_bounds[AW_MAX_FRAMES + 1]; /* frame k = windows [b_k, b_k+1) */
+} aw_iparams;
+
+#endif /* AW_PARAM_BLOCKS_H */

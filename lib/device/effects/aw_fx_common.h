@@ -1,0 +1,52 @@
+/* arnoldweb portable device core: what every effect header uses: the feature
+ * test, atomic increments of the 32-bit counters, and the outputs of a
+ * work-item. */
+#ifndef AW_FX_COMMON_H
+#define AW_FX_COMMON_H
+
+#include "aw_state.h"
+
+/* features is a compile-time constant in OpenCL and CUDA (aw_config built
+ * from -D options), so an effect that is not asked for folds away. */
+#define AW_HAS(flag) ((cfg.features & (flag)) != 0u)
+
+#if defined(AW_OPENCL)
+#define AW_ATOMIC_INC(p) atomic_inc(p)
+#elif defined(AW_CUDA)
+#define AW_ATOMIC_INC(p) atomicAdd((p), 1u)
+#else
+#define AW_ATOMIC_INC(p) __atomic_fetch_add((p), 1u, __ATOMIC_RELAXED)
+#endif
+
+/* Where the results of one work-item go. Pointers the scene does not need may
+ * be null; they are never touched then. */
+typedef struct {
+  AW_GLOBAL aw_u32* map;       /* F velocity maps of 12 nside^2 counts, then the zoom */
+  AW_GLOBAL aw_u32* counters;  /* AW_C_COUNT counters */
+  AW_GLOBAL real* initial_r;   /* AW_STATE_REALS per trajectory of the chunk */
+  AW_GLOBAL real* final_r;     /* AW_STATE_REALS per trajectory of the chunk */
+  AW_GLOBAL aw_i64* final_i;   /* AW_STATE_INTS per trajectory of the chunk */
+} aw_outputs;
+
+/* The trajectories of one work-item: first .. first + AW_LANES - 1; those at
+ * or beyond end are idle lanes. chunk_first: the chunk's first trajectory
+ * (state records are relative to it). */
+typedef struct {
+  aw_u64 first, end, chunk_first;
+} aw_lanes;
+
+/* A lane of the work-item that holds a trajectory. */
+#define AW_LANE_ACTIVE(l, j) ((l).first + (aw_u64)(j) < (l).end)
+
+/* 1 in the lanes whose direction (x, y, z) lies in the gnomonic square region
+ * r (aw_params.h), 0 elsewhere. */
+AW_FN lreal aw_in_region(AW_CONSTANT aw_region* r, lreal x, lreal y, lreal z) {
+  lreal dc = AW_FMA(z, AW_LSPLAT(r->c[2]), AW_FMA(y, AW_LSPLAT(r->c[1]), x * r->c[0]));
+  lreal d1 = AW_FMA(z, AW_LSPLAT(r->e1[2]), AW_FMA(y, AW_LSPLAT(r->e1[1]), x * r->e1[0]));
+  lreal d2 = AW_FMA(z, AW_LSPLAT(r->e2[2]), AW_FMA(y, AW_LSPLAT(r->e2[1]), x * r->e2[0]));
+  lreal lim = dc * r->half_width;
+  return AW_SELECT(AW_LSPLAT(AW_R(1.0)), AW_LSPLAT(AW_R(0.0)),
+                   (dc <= AW_R(0.0)) | (AW_FABS(d1) > lim) | (AW_FABS(d2) > lim));
+}
+
+#endif /* AW_FX_COMMON_H */

@@ -1,0 +1,30 @@
+/* arnoldweb test hooks: "test_inject" poisons one trajectory's momentum (the
+ * flagging tests), "time_reversal" integrates back after the run (P -> -P,
+ * the same steps again, P -> -P: back at the start, to rounding). Compiled in
+ * only by the tests that ask for them. */
+#ifndef AW_FX_TESTING_H
+#define AW_FX_TESTING_H
+
+#include "aw_stepper.h"
+#include "effects/aw_fx_common.h"
+
+AW_FN void aw_inject(aw_lstate* s, aw_lanes l, AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip) {
+  real tmp[AW_LANES];
+  AW_STORE_LANES(s->px, tmp);
+  for (int j = 0; j < AW_LANES; ++j)
+    if (l.first + (aw_u64)j == (aw_u64)ip->inject_index) tmp[j] += rp->inject_value;
+  s->px = AW_LOAD_LANES(tmp);
+}
+
+AW_FN void aw_reverse(aw_config cfg, aw_lstate* s, AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip) {
+  s->px = -s->px;
+  s->py = -s->py;
+  s->pz = -s->pz;
+  for (aw_i64 w = 0; w < ip->windows; ++w)
+    for (aw_i64 g = 0; g < ip->segments; ++g) aw_segment(s, ip->steps_per_segment, rp, cfg.stages, cfg.kick_first);
+  s->px = -s->px;
+  s->py = -s->py;
+  s->pz = -s->pz;
+}
+
+#endif /* AW_FX_TESTING_H */

@@ -1,0 +1,88 @@
+// arnoldweb: the thin device layer under every backend. A ComputeDevice is
+// what truly differs between the cpu backend, OpenCL and CUDA: memory, copies,
+// compiling the kernels for a configuration, launching them and waiting. The
+// run of an ensemble on it (buffers, launches, folding, reading back) is
+// written once, in EnsembleBackend (ensemble_backend.hpp). This is the idea of
+// CLBlast's clpp11.hpp / cupp11.hpp twins and of OpenMM's ComputeContext.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "arnoldweb/device.hpp"
+
+namespace arnoldweb::detail {
+
+// A buffer in a device's memory (host memory for the cpu backend). Made by
+// ComputeDevice::allocate and usable only with that device.
+class DeviceMemory {
+ public:
+  explicit DeviceMemory(std::size_t bytes) : bytes_(bytes) {}
+  virtual ~DeviceMemory() = default;
+  DeviceMemory(const DeviceMemory&) = delete;
+  DeviceMemory& operator=(const DeviceMemory&) = delete;
+  std::size_t bytes() const { return bytes_; }
+
+ private:
+  std::size_t bytes_;
+};
+
+// How a launch over `count` trajectories is shaped.
+struct LaunchShape {
+  std::uint64_t groups = 0;      // work-groups (blocks); each writes AW_GROUP_STATS reals
+  std::uint64_t group_size = 0;  // work-items per group
+  std::uint64_t items = 0;       // work-items in all (groups * group_size)
+};
+
+// The buffers of the ensemble kernel; those the plan does not need are null.
+struct EnsembleBuffers {
+  DeviceMemory* reals = nullptr;     // aw_rparams, in the kernel's precision
+  DeviceMemory* ints = nullptr;      // aw_iparams
+  DeviceMemory* counts = nullptr;    // 32-bit histogram counts of the chunk
+  DeviceMemory* counters = nullptr;  // AW_C_COUNT 32-bit counters
+  DeviceMemory* initial_r = nullptr;
+  DeviceMemory* final_r = nullptr;
+  DeviceMemory* final_i = nullptr;
+  DeviceMemory* group_stats = nullptr;
+};
+
+class ComputeDevice {
+ public:
+  virtual ~ComputeDevice() = default;
+  virtual const DeviceInfo& info() const = 0;
+  // The largest single buffer, and the memory free now (0: unknown).
+  virtual std::uint64_t max_allocation() const { return info().memory; }
+  virtual std::uint64_t free_memory() const { return 0; }
+
+  // Compiles (or finds in a cache) the ensemble and fold kernels for the
+  // configuration. Throws BuildError, DeviceError.
+  virtual void compile(const KernelConfig& config) = 0;
+  virtual std::string kernel_description() const = 0;
+
+  // `what` names the buffer in errors. Throws DeviceError.
+  virtual std::unique_ptr<DeviceMemory> allocate(std::size_t bytes, const char* what) = 0;
+  virtual void upload(DeviceMemory& to, const void* from, std::size_t bytes) = 0;
+  virtual void download(const DeviceMemory& from, void* to, std::size_t bytes) = 0;
+  virtual void zero(DeviceMemory& m) = 0;
+
+  virtual LaunchShape shape(std::uint64_t count) const = 0;
+  // The ensemble kernel over trajectories [first, first + count); may return
+  // before it is done.
+  virtual void launch_ensemble(std::uint64_t first, std::uint64_t count, const LaunchShape& shape,
+                               const EnsembleBuffers& buffers) = 0;
+  // total[i] += part[i], part[i] = 0 for i < n (64-bit totals of 32-bit counts).
+  virtual void launch_fold(DeviceMemory& total, DeviceMemory& part, std::uint64_t n) = 0;
+  // Waits for what was launched; errors raised inside kernels surface here,
+  // reported with `what` (the launch's range of trajectories).
+  virtual void finish(const std::string& what) = 0;
+
+  // Trajectories per launch that keep the device busy.
+  virtual std::uint64_t preferred_chunk() const = 0;
+};
+
+// The one Backend over a ComputeDevice.
+std::unique_ptr<Backend> make_ensemble_backend(std::unique_ptr<ComputeDevice> device);
+
+}  // namespace arnoldweb::detail

@@ -1,0 +1,156 @@
+// arnoldweb: the cpu backend's device: the device core compiled as C++
+// (cpu_kernel.hpp), run over all cores with OpenMP, on buffers in host memory.
+#include <omp.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+
+#include "arnoldweb/errors.hpp"
+#include "aw_params.h"
+#include "backends/backends.hpp"
+#include "backends/compute_device.hpp"
+#include "backends/cpu/cpu_kernel.hpp"
+
+namespace arnoldweb::detail {
+namespace {
+
+std::string cpu_model_name() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("model name", 0) == 0) {
+      auto colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(" \t", colon + 1));
+    }
+  return "CPU";
+}
+
+// A line of /proc/meminfo ("MemAvailable:   123456 kB"), in bytes; 0 if absent.
+std::uint64_t meminfo(const std::string& key) {
+  std::ifstream in("/proc/meminfo");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.compare(0, key.size(), key) == 0) return std::strtoull(line.c_str() + key.size(), nullptr, 10) * 1024;
+  return 0;
+}
+
+class HostMemory final : public DeviceMemory {
+ public:
+  HostMemory(std::size_t bytes, const std::string& device, const char* what) : DeviceMemory(bytes) {
+    try {
+      data_.resize((std::max<std::size_t>(bytes, 1) + 7) / 8);  // 8-byte aligned
+    } catch (const std::bad_alloc&) {
+      throw DeviceError(device, "", 0,
+                        "out of memory allocating " + std::to_string(bytes) + " bytes for " + what);
+    }
+  }
+  void* data() { return data_.data(); }
+  const void* data() const { return data_.data(); }
+
+ private:
+  std::vector<std::uint64_t> data_;
+};
+
+HostMemory& host(DeviceMemory& m) { return static_cast<HostMemory&>(m); }
+const HostMemory& host(const DeviceMemory& m) { return static_cast<const HostMemory&>(m); }
+template <class T>
+T* ptr(DeviceMemory* m) {
+  return m ? static_cast<T*>(host(*m).data()) : nullptr;
+}
+
+class CpuDevice final : public ComputeDevice {
+ public:
+  CpuDevice() : info_(cpu_device_info()) {}
+  const DeviceInfo& info() const override { return info_; }
+  std::uint64_t free_memory() const override { return meminfo("MemAvailable:"); }
+
+  void compile(const KernelConfig& k) override {
+    const bool fl = k.precision == Precision::Float;
+    const bool native = k.math == MathMode::Native;
+    kernel_ = cpu_kernel(k.model, fl, native);
+    if (!kernel_)
+      throw DeviceError(info_.id, "", 0, "this build has no cpu kernel for model " + std::to_string(k.model));
+    config_ = k;
+    variant_ = std::string("cpu_") + (fl ? "float" : "double") + "_" + (native ? "native" : "portable");
+  }
+  std::string kernel_description() const override { return variant_; }
+
+  std::unique_ptr<DeviceMemory> allocate(std::size_t bytes, const char* what) override {
+    return std::make_unique<HostMemory>(bytes, info_.id, what);
+  }
+  void upload(DeviceMemory& to, const void* from, std::size_t bytes) override {
+    std::memcpy(host(to).data(), from, bytes);
+  }
+  void download(const DeviceMemory& from, void* to, std::size_t bytes) override {
+    std::memcpy(to, host(from).data(), bytes);
+  }
+  void zero(DeviceMemory& m) override { std::memset(host(m).data(), 0, m.bytes()); }
+
+  LaunchShape shape(std::uint64_t count) const override {
+    LaunchShape s;
+    s.groups = (count + kCpuBlock - 1) / kCpuBlock;
+    s.group_size = kCpuBlock;
+    s.items = s.groups * kCpuBlock;
+    return s;
+  }
+
+  void launch_ensemble(std::uint64_t first, std::uint64_t count, const LaunchShape&,
+                       const EnsembleBuffers& b) override {
+    CpuChunk c;
+    c.features = config_.features;
+    c.stages = config_.stages;
+    c.kick_first = config_.kick_first ? 1 : 0;
+    c.initial = config_.initial;
+    c.first = first;
+    c.end = first + count;
+    c.rp = host(*b.reals).data();
+    c.ip = host(*b.ints).data();
+    c.map = ptr<std::uint32_t>(b.counts);
+    c.counters = ptr<std::uint32_t>(b.counters);
+    c.initial_r = ptr<void>(b.initial_r);
+    c.final_r = ptr<void>(b.final_r);
+    c.final_i = ptr<std::int64_t>(b.final_i);
+    c.group_stats = ptr<void>(b.group_stats);
+    kernel_(c);
+  }
+
+  void launch_fold(DeviceMemory& total, DeviceMemory& part, std::uint64_t n) override {
+    auto* t = static_cast<std::uint64_t*>(host(total).data());
+    auto* p = static_cast<std::uint32_t*>(host(part).data());
+    for (std::uint64_t i = 0; i < n; ++i) {
+      t[i] += p[i];
+      p[i] = 0;
+    }
+  }
+
+  void finish(const std::string&) override {}
+  std::uint64_t preferred_chunk() const override { return kCpuBlock * info_.compute_units * 4; }
+
+ private:
+  DeviceInfo info_;
+  KernelConfig config_;
+  CpuKernel kernel_ = nullptr;
+  std::string variant_;
+};
+
+}  // namespace
+
+DeviceInfo cpu_device_info() {
+  DeviceInfo d;
+  d.id = "cpu";
+  d.backend = "cpu";
+  d.name = cpu_model_name();
+  d.vendor = "arnoldweb C++ (OpenMP)";
+  d.version = std::to_string(_OPENMP);
+  d.fp64 = true;
+  d.compute_units = static_cast<unsigned>(std::max(1, omp_get_max_threads()));
+  d.memory = meminfo("MemTotal:");
+  d.is_cpu = true;
+  return d;
+}
+
+std::unique_ptr<Backend> make_cpu_backend() { return make_ensemble_backend(std::make_unique<CpuDevice>()); }
+
+}  // namespace arnoldweb::detail

@@ -1,0 +1,28 @@
+// arnoldweb: the effect table. One row per optional effect of the kernels:
+// its name (in summary.json and `check`), its feature bit (lib/device/
+// aw_params.h) and whether a scene asks for it. The planner compiles exactly
+// the effects a scene asks for into its kernel.
+// Adding an effect: its device header (lib/device/effects/), its bit, and a
+// row here.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "arnoldweb/scene.hpp"
+
+namespace arnoldweb::detail {
+
+struct EffectRow {
+  std::string name;
+  std::uint32_t bit = 0;
+  bool (*asked)(const Scene& scene) = nullptr;  // null: only test code sets the bit
+};
+
+const std::vector<EffectRow>& effects();
+
+// The feature mask of the effects `scene` asks for.
+std::uint32_t features_of(const Scene& scene);
+
+}  // namespace arnoldweb::detail

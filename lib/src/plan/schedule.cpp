@@ -1,0 +1,82 @@
+// arnoldweb: the step schedule of a plan: steps per energy sample, samples per
+// averaging window, windows per trajectory, frame boundaries. Every count is
+// checked against overflow before it is made.
+#include "plan/schedule.hpp"
+
+#include "aw_params.h"
+#include "plan/checks.hpp"
+
+namespace arnoldweb::detail {
+namespace {
+
+// A trajectory has at most this many steps (10^15: years of device time for
+// one trajectory; every count derived from it fits 64 bits and exact doubles).
+constexpr double kMaxStepsPerTrajectory = 1e15;
+
+std::string fmt(double v) { return show_number(v); }
+
+void check_counts(const Scene& scene) {
+  const double steps_wanted = scene.duration / scene.step;
+  if (steps_wanted <= kMaxStepsPerTrajectory) return;
+  // blame the key given last (an override of the step, or of the duration)
+  const bool step_last = scene.pos("integrator.step").set_index > scene.pos("run.duration").set_index;
+  fail_at(scene, step_last ? "integrator.step" : "run.duration",
+          "run.duration / integrator.step = " + fmt(scene.duration) + " T / " + fmt(scene.step) + " T = " +
+              fmt(steps_wanted) + " steps per trajectory; at most " + fmt(kMaxStepsPerTrajectory) +
+              " are allowed: the largest run.duration with this step is " + fmt(kMaxStepsPerTrajectory * scene.step) +
+              " T, the smallest integrator.step for this duration " + fmt(scene.duration / kMaxStepsPerTrajectory) +
+              " T");
+}
+
+}  // namespace
+
+void plan_schedule(const Scene& scene, Plan& p) {
+  p.step = scene.step;
+  check_counts(scene);
+  const std::int64_t per_window = exact_ratio(scene.average, p.step);
+  if (per_window == 0)
+    fail_at(scene, "run.average",
+            "run.average = " + fmt(scene.average) + " T is not a positive multiple of integrator.step = " +
+                fmt(p.step) + " T (" + fmt(scene.average / p.step) + " steps)");
+  p.windows = exact_ratio(scene.duration, scene.average);
+  if (p.windows == 0)
+    fail_at(scene, "run.duration",
+            "run.duration = " + fmt(scene.duration) + " T is not a positive multiple of run.average = " +
+                fmt(scene.average) + " T");
+  if (scene.energy_error || scene.max_energy_error.has_value()) {
+    p.segments_per_window = exact_ratio(scene.average, scene.energy_every);
+    const std::int64_t seg_steps = exact_ratio(scene.energy_every, p.step);
+    if (p.segments_per_window == 0 || seg_steps == 0 || seg_steps * p.segments_per_window != per_window)
+      fail_at(scene, "observe.energy_error.every",
+              "the energy sample interval " + fmt(scene.energy_every) + " T must divide run.average = " +
+                  fmt(scene.average) + " T and be a multiple of integrator.step = " + fmt(p.step) + " T");
+    p.steps_per_segment = seg_steps;
+  } else {
+    p.segments_per_window = 1;
+    p.steps_per_segment = per_window;
+  }
+  p.steps_per_trajectory = p.windows * per_window;
+  p.trajectory_steps = static_cast<double>(scene.trajectories) * static_cast<double>(p.steps_per_trajectory);
+  p.force_evaluations = p.trajectory_steps * p.method.stages;
+}
+
+void plan_frames(const Scene& scene, Plan& p) {
+  p.frames = 1;
+  p.frame_bounds = {0, p.windows};
+  if (scene.frame_times.empty()) return;
+  if (!scene.velocity_map) fail_at(scene, "observe.frames", "frames are velocity maps: set observe.velocity_map too");
+  if (static_cast<int>(scene.frame_times.size()) > AW_MAX_FRAMES + 1)
+    fail_at(scene, "observe.frames.times", "at most " + std::to_string(AW_MAX_FRAMES + 1) + " times");
+  p.frame_bounds.clear();
+  for (double t : scene.frame_times) {
+    const std::int64_t w = t == 0 ? 0 : exact_ratio(t, scene.average);
+    if ((t != 0 && w == 0) || w > p.windows)
+      fail_at(scene, "observe.frames.times",
+              "frame time " + fmt(t) + " T is not a multiple of run.average = " + fmt(scene.average) +
+                  " T between 0 and run.duration = " + fmt(scene.duration) + " T");
+    p.frame_bounds.push_back(w);
+  }
+  p.frames = static_cast<int>(p.frame_bounds.size()) - 1;
+}
+
+}  // namespace arnoldweb::detail
