@@ -83,7 +83,7 @@ TEST_SUITE("order") {
         // one term (SABA1 = leapfrog): eps h^2 dominates, no fall with E
         const int expected_gamma = K >= 2 ? 1 : 0;
         std::printf("  %-8s %-9s E=15: ht 0.1 %.2e, 0.05 %.2e: order %.2f (expected %d); ht %.1f: E=60 %.2e, "
-                    "E=400 %.2e: dE ~ E^-%.2f (expected %d)",
+                    "E=400 %.2e: dE ~ E^(-%.2f) (expected %d)",
                     m->name.c_str(), eps_order_string(*m).c_str(), a, b, last, m->eps_orders.back(), ht, e60, e400,
                     gamma, expected_gamma);
         CHECK(std::fabs(last - m->eps_orders.back()) <= 0.3);
