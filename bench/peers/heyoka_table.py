@@ -187,7 +187,8 @@ def main():
     ap.add_argument("--trajectories", type=int, default=20000)
     ap.add_argument("--threads", type=int, default=2, help="heyoka threads (arnoldweb's cpu backend uses OpenMP)")
     ap.add_argument("--methods", default="srkn11b,aba864,aba1064,bab84,kahan-li-s15")
-    ap.add_argument("--tolerances", default="1e-6,1e-7,1e-8,1e-9,1e-10,1e-11,1e-12,1e-13,1e-14,1e-15,1e-16")
+    ap.add_argument("--tolerances", default="1e-6,3e-7,1e-7,3e-8,1e-8,3e-9,1e-9,3e-10,1e-10,3e-11,1e-11,3e-12,1e-12,"
+                    "3e-13,1e-13,3e-14,1e-14,3e-15,1e-15,3e-16,1e-16")
     ap.add_argument("--arnoldweb", default=os.path.join(ROOT, "build", "arnoldweb"))
     ap.add_argument("--venv", default=os.path.join(ROOT, "build", "heyoka-venv"))
     ap.add_argument("--work", default="/tmp/arnoldweb-heyoka")
