@@ -27,7 +27,11 @@ using namespace arnoldweb;
 
 namespace {
 
-using q = __float128;
+#ifdef __SIZEOF_FLOAT128__
+using q = __float128;  // GCC and Clang on x86-64
+#else
+using q = long double;  // IEEE quad on AArch64; elsewhere the eps h^10 slopes may blur
+#endif
 struct C {
   q re = 0, im = 0;
 };
