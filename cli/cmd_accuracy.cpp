@@ -20,6 +20,7 @@ struct AccuracyFlags {
   std::uint64_t pilot = 512;
   double pilot_duration = 5;
   std::vector<std::string> methods;
+  bool no_prefilter = false;
 };
 
 std::string num(double v) {
@@ -63,6 +64,7 @@ int run_accuracy(const AccuracyFlags& f) {
   o.trajectories = f.pilot;
   o.duration = f.pilot_duration;
   o.methods = f.methods;
+  o.prefilter = !f.no_prefilter;
   const AccuracyReport r = assess_accuracy(scene, *backend, target, o);
 
   std::cout << "scene        " << scene.file << " (E = " << scene.energy << ", " << scene.trajectories
@@ -97,6 +99,7 @@ int run_accuracy(const AccuracyFlags& f) {
     const AccuracyChoice& c = r.per_method[i];
     std::string pts;
     for (std::size_t k = 0; k < fit.points.size(); ++k) pts += (k ? " " : "") + num(fit.points[k].max);
+    if (fit.prefiltered) pts += " -";
     if (c.meets) {
       char ratio[32];
       std::snprintf(ratio, sizeof ratio, "%.2fx", r.found ? c.forces_per_t / r.best.forces_per_t : 0.0);
@@ -109,6 +112,12 @@ int run_accuracy(const AccuracyFlags& f) {
                   c.note.c_str());
     }
   }
+  int skipped = 0;
+  for (const MethodFit& fit : r.fits) skipped += fit.prefiltered ? 1 : 0;
+  if (skipped > 0)
+    std::cout << "pre-filter   h0/4 not run for " << skipped << " of " << r.fits.size()
+              << " methods: even at their highest order they cost more than the best prediction"
+                 " (--no-prefilter runs it)\n";
   std::cout << "\n";
   if (!r.found) {
     std::cout << "no choice    " << r.why_not << "\n";
@@ -175,6 +184,8 @@ void add_accuracy_command(CLI::App& app, Action& action) {
   c->add_option("--methods", flags->methods, "Only these methods, comma-separated (default: all)")
       ->delimiter(',')
       ->check(CLI::IsMember(names));
+  c->add_flag("--no-prefilter", flags->no_prefilter,
+              "Run every method at h0/4 too (by default methods that cannot be the cheapest stop at h0/2)");
   c->callback([&action, flags] { action = [flags] { return run_accuracy(*flags); }; });
 }
 

@@ -116,12 +116,40 @@ TEST_SUITE("core") {
       if (c.meets) CHECK(c.forces_per_t >= r.best.forces_per_t);
     for (const MethodFit& f : r.fits) {
       CAPTURE(f.method);
-      REQUIRE(f.points.size() == 3);
+      // the pre-filter stops a method at h0/2 only where its best case loses
+      REQUIRE(f.points.size() == (f.prefiltered ? 2u : 3u));
+      if (f.prefiltered) CHECK(f.optimistic_forces_per_t > r.best.forces_per_t);
       // a pilot point is predicted as measured
       CHECK(f.predict_max(f.points[1].step) == doctest::Approx(f.points[1].max));
       // and the error falls with the step at about the nominal order
-      if (f.floor == 0 && f.points.back().max > 1e-12)
+      if (!f.prefiltered && f.floor == 0 && f.points.back().max > 1e-12)
         CHECK(std::log(f.points[1].max / f.points[2].max) / std::log(2.0) > f.order - 1.5);
+    }
+  }
+
+  TEST_CASE("accuracy pre-filter: the same choice with fewer pilot runs, at E = 15 and E = 400") {
+    auto cpu = open_backend("cpu");
+    for (const char* energy : {"model.energy=15", "model.energy=400"}) {
+      CAPTURE(energy);
+      const Scene s = awtest::scene_from(kScene, {energy});
+      PilotOptions o;
+      o.trajectories = 256;
+      o.duration = 2;
+      const AccuracyReport with = assess_accuracy(s, *cpu, 1e-8, o);
+      o.prefilter = false;
+      const AccuracyReport without = assess_accuracy(s, *cpu, 1e-8, o);
+      REQUIRE(with.found);
+      REQUIRE(without.found);
+      CHECK(with.best.method == without.best.method);
+      CHECK(with.best.step == without.best.step);
+      int skipped = 0;
+      for (const MethodFit& f : with.fits) skipped += f.prefiltered ? 1 : 0;
+      for (const MethodFit& f : without.fits) CHECK_FALSE(f.prefiltered);
+      std::printf("pre-filter (%s, 1e-8): %s at T/%.0f; h0/4 skipped for %d of %zu methods; pilot %.2f s against "
+                  "%.2f s\n",
+                  energy, with.best.method.c_str(), 1 / with.best.step, skipped, with.fits.size(), with.pilot_seconds,
+                  without.pilot_seconds);
+      CHECK(skipped >= static_cast<int>(with.fits.size()) / 2);  // most methods are clearly dominated
     }
   }
 }

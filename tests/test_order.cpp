@@ -37,7 +37,9 @@ constexpr double kHorizon = 1.0;  // in T
 constexpr int kReferenceSteps = 1000;
 
 // Steps per T for each method, chosen once (the results are the same bits on
-// every device). A method without a row fails the test.
+// every device). A method without a row fails the test. The near-integrable
+// families have no single order at E = 2 (eps_eff = 1): their orders in h and in
+// eps are checked by tests/test_order_eps.cpp.
 const std::map<std::string, std::vector<int>>& order_steps() {
   static const std::map<std::string, std::vector<int>> steps = {
       {"leapfrog", {200, 400, 800, 1600}},   {"forest-ruth", {100, 200, 400, 800}},
@@ -118,7 +120,7 @@ TEST_SUITE("order") {
   TEST_CASE("every method converges at its nominal order on this Hamiltonian (within 0.15)") {
     for (const Method& m : methods()) {
       CAPTURE(m.name);
-      CHECK(order_steps().count(m.name) == 1);
+      CHECK(order_steps().count(m.name) == (m.family == "near-integrable" ? 0 : 1));
     }
     for (const auto& dev : awtest::devices_under_test()) {
       CAPTURE(dev.id);

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Plots and tables of the work-precision benchmark (docs/accuracy.md).
 
-Usage: bench/work_precision/plot.py RESULTS.csv [--img docs/img] [--tables FILE.md]
+Usage: bench/work_precision/plot.py RESULTS.csv [--img docs/img] [--tables FILE.md] [--prefix work_precision]
 
 Reads the CSV of arnoldweb_work_precision ('#' lines are comments), draws for
 each energy error against cost (one curve per method) and prints, for
@@ -28,11 +28,19 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 TOLERANCES = [1e-6, 1e-8, 1e-10]
 METHOD_ORDER = ["leapfrog", "forest-ruth", "pefrl", "srkn6b", "yoshida6a", "kahan-li-s9", "srkn11b",
-                "kahan-li-s15", "yoshida8d", "odeint-sb3a"]
+                "kahan-li-s15", "yoshida8d", "odeint-sb3a", "saba1", "saba2", "saba3", "saba4", "sbab2", "sbab3",
+                "sbab4", "bab84", "aba104", "aba864", "aba1064"]
 COLOURS = {"leapfrog": "#999999", "forest-ruth": "#1f77b4", "pefrl": "#17becf", "srkn6b": "#2ca02c",
            "yoshida6a": "#d62728", "kahan-li-s9": "#ff7f0e", "srkn11b": "#9467bd", "kahan-li-s15": "#8c564b",
-           "yoshida8d": "#e377c2", "odeint-sb3a": "#000000"}
+           "yoshida8d": "#e377c2", "odeint-sb3a": "#000000",
+           # the near-integrable families (docs/methods.md): dashed
+           "saba1": "#c7c7c7", "saba2": "#aec7e8", "saba3": "#98df8a", "saba4": "#bcbd22", "sbab2": "#ffbb78",
+           "sbab3": "#ff9896", "sbab4": "#dbdb8d", "bab84": "#17becf", "aba104": "#393b79", "aba864": "#e6550d",
+           "aba1064": "#31a354"}
+NEAR_INTEGRABLE = {"saba1", "saba2", "saba3", "saba4", "sbab2", "sbab3", "sbab4", "bab84", "aba104", "aba864",
+                   "aba1064"}
 PAPER = "yoshida6a"
+CPU = "2-core Xeon"  # replaced by the CSV header's cpu device
 
 
 def read(path):
@@ -85,13 +93,14 @@ def cheapest_measured(points, tol):
     return min(ok, key=lambda p: p["cost_s_per_traj_per_T"]) if ok else None
 
 
-def plot(rows, img_dir):
+def plot(rows, img_dir, prefix="work_precision"):
     cs = curves(rows)
     energies = sorted({r["energy"] for r in rows})
+    precisions = [p for p in ("double", "float") if any(r["precision"] == p for r in rows)]
     files = []
     for e in energies:
-        fig, axes = plt.subplots(2, 2, figsize=(13, 10))
-        for row, prec in enumerate(("double", "float")):
+        fig, axes = plt.subplots(len(precisions), 2, figsize=(13, 5 * len(precisions)), squeeze=False)
+        for row, prec in enumerate(precisions):
             for col, (key, label) in enumerate((("max_dE", "max |dE| over the ensemble"),
                                                 ("traj_err_median", "median trajectory error at 1 T"))):
                 ax = axes[row][col]
@@ -109,6 +118,8 @@ def plot(rows, img_dir):
                         lab = (m if dev == "cpu" else None)
                         if m == "odeint-sb3a":
                             lab = "Boost.Odeint sb3a (cpu, libm)"
+                        if m in NEAR_INTEGRABLE and dev == "cpu":
+                            style = "--"
                         ax.loglog(xs, ys, style, marker="o" if dev == "cpu" else None, ms=3, color=COLOURS[m],
                                   label=lab, lw=2.0 if m == PAPER else 1.2)
                 paper = [r for r in rows if r["energy"] == e and r["method"] == PAPER and r["device"] == "cpu"
@@ -122,13 +133,17 @@ def plot(rows, img_dir):
                 for tol in TOLERANCES:
                     if key == "max_dE":
                         ax.axhline(tol, color="#cccccc", lw=0.8, zorder=0)
-                ax.set_xlabel("cost: core-seconds per trajectory per T (2-core Xeon, calibrated)")
+                ax.set_xlabel("cost: core-seconds per trajectory per T (" + CPU + ", calibrated)")
                 ax.set_ylabel(label)
-                ax.set_title(f"E = {e:g}, {prec}, portable math (solid: cpu, dotted: opencl:0 PoCL)", fontsize=10)
+                legend = ("solid: cpu, dotted: opencl:0 PoCL" if any(r["device"] == "opencl:0" for r in rows)
+                          else "cpu")
+                if any(r["method"] in NEAR_INTEGRABLE for r in rows):
+                    legend += "; dashed: near-integrable methods"
+                ax.set_title(f"E = {e:g}, {prec}, portable math ({legend})", fontsize=10)
                 ax.grid(True, which="major", alpha=0.3)
         axes[0][0].legend(fontsize=8, loc="lower left")
         fig.tight_layout()
-        path = os.path.join(img_dir, f"work_precision_E{e:g}.png")
+        path = os.path.join(img_dir, f"{prefix}_E{e:g}.png")
         fig.savefig(path, dpi=90)
         plt.close(fig)
         files.append(path)
@@ -229,9 +244,15 @@ def main():
         img = args[args.index("--img") + 1]
     if "--tables" in args:
         tables_path = args[args.index("--tables") + 1]
+    prefix = args[args.index("--prefix") + 1] if "--prefix" in args else "work_precision"
     rows, comments = read(path)
+    global CPU
+    for c in comments:  # the CPU of the run, from the CSV header
+        if c.startswith("# device cpu:"):
+            name = c.split(":", 1)[1].split("(")[0].strip()
+            CPU = "2-core " + name if name else CPU
     os.makedirs(img, exist_ok=True)
-    files = plot(rows, img)
+    files = plot(rows, img, prefix)
     text = ["<!-- generated by bench/work_precision/plot.py from " + os.path.basename(path) + " -->"]
     text += [c.rstrip() for c in comments if c.startswith("# arnoldweb_work_precision") or
              c.startswith("# device") or c.startswith("# total")]

@@ -29,6 +29,12 @@ struct PilotOptions {
   std::vector<std::string> methods;
   // Run the chosen method and step on the pilot ensemble before accepting it.
   bool verify = true;
+  // Pre-filter: measure the steps past h0/2 (the costliest: h0/4 costs 4x h0) only for
+  // methods that could still be the cheapest. After h0 and h0/2, a method is passed over
+  // where even its most optimistic extrapolation (error ~ h^(q+2), q its highest order in
+  // eps) needs more force evaluations than the cheapest conservative prediction of any
+  // method. Such a method keeps its two points and is never the cheapest (docs/accuracy.md).
+  bool prefilter = true;
 };
 
 // One pilot measurement.
@@ -50,6 +56,9 @@ struct MethodFit {
   // pilot stopped converging (round-off), 0 if it did not.
   double order_fit = 0;
   double floor = 0;
+  int top_order = 0;         // highest order in h and eps (Method::eps_orders)
+  bool prefiltered = false;  // the pre-filter skipped the steps past h0/2
+  double optimistic_forces_per_t = 0;  // the pre-filter's best case (0: not evaluated)
   double predict_max(double step) const;
   double predict_median(double step) const;
 };

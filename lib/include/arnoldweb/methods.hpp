@@ -19,7 +19,20 @@ struct Method {
   std::vector<double> drift;  // a_i, fractions of the step
   std::vector<double> kick;   // b_i, fractions of the step
   double stability = 0;       // linear stability limit h*omega (harmonic oscillator)
+  // Order in h and in eps for H = A + eps B, A = |P|^2/2 (the drift), B = V (the kick):
+  // the modified Hamiltonian differs from H by O(eps h^p1 + eps^2 h^p2 + eps^3 h^p3 ...),
+  // eps_orders = {p1, p2, ...}; the last entry holds for every higher power of eps.
+  // A composition method of order p: {p}. SABA_n: {2n, 2}. ABA(8,6,4): {8, 6, 4}.
+  // `order` is the smallest entry (the order at eps = O(1)).
+  std::vector<int> eps_orders;
+  // The orders need {B,{B,{B,A}}} = 0 (B depends on X only, A quadratic in P: Runge-Kutta-
+  // Nystrom problems such as this one); false: they hold for any A + eps B.
+  bool rkn = false;
+  std::string family;  // "composition", "rkn" or "near-integrable"
 };
+
+// "(8,6,4)" for eps_orders {8, 6, 4}; "(6)" for a composition of order 6.
+std::string eps_order_string(const Method& m);
 
 // Every method the library knows, in order of increasing order and cost.
 const std::vector<Method>& methods();

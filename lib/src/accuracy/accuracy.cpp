@@ -7,7 +7,8 @@
 // interpolated log-linearly; below them it is extrapolated with the slope of
 // the last two converging points, never steeper than the nominal order; where
 // the error stops falling, round-off has been reached and the error is held at
-// that floor. The cheapest (stages / step) method and step whose predicted
+// that floor (a pre-filter skips the last step of methods that cannot be the
+// cheapest even in their best case). The cheapest (stages / step) method and step whose predicted
 // pilot max|dE| times the safety factor is within the tolerance is then run on
 // the pilot ensemble; if it misses, the measurement joins the fit and the
 // search repeats.
@@ -244,6 +245,17 @@ AccuracyChoice cheapest_step(const MethodFit& f, double target, double every, do
   return c;
 }
 
+// The pre-filter's best case for one method: force evaluations per T if its error fell
+// from its smallest measured step as h^(top_order + 2) (faster than any term of the
+// method; 0 where the pilot gives no finite error to start from).
+double optimistic_forces(const MethodFit& f, double target, double largest) {
+  const PilotPoint& p = f.points.back();
+  if (!(p.max > 0) || !std::isfinite(p.max)) return 0;
+  double h = p.max <= target ? largest : p.step * std::pow(target / p.max, 1.0 / (f.top_order + 2));
+  h = std::min(h, largest);
+  return f.stages / h;
+}
+
 }  // namespace
 
 double MethodFit::predict_max(double step) const { return predict(merged(*this), &PilotPoint::max, order, step); }
@@ -312,10 +324,29 @@ AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tole
     f.method = m.name;
     f.order = m.order;
     f.stages = m.stages;
-    for (int k = 0; k < o.steps_per_method; ++k)
+    f.top_order = m.eps_orders.empty() ? m.order : *std::max_element(m.eps_orders.begin(), m.eps_orders.end());
+    const int first = o.prefilter ? std::min(o.steps_per_method, 2) : o.steps_per_method;
+    for (int k = 0; k < first; ++k)
       f.points.push_back(pilot.measure(m.name, every / static_cast<double>(n0 << k)));
     describe(f);
     rep.fits.push_back(f);
+  }
+  if (o.prefilter && o.steps_per_method > 2) {
+    double best = kInf;  // the cheapest conservative prediction after two steps
+    for (const MethodFit& f : rep.fits) {
+      const AccuracyChoice c = cheapest_step(f, target, every, largest, scene.energy);
+      if (c.meets) best = std::min(best, c.forces_per_t);
+    }
+    for (MethodFit& f : rep.fits) {
+      f.optimistic_forces_per_t = optimistic_forces(f, target, largest);
+      if (f.optimistic_forces_per_t > best) {
+        f.prefiltered = true;
+        continue;
+      }
+      for (int k = 2; k < o.steps_per_method; ++k)
+        f.points.push_back(pilot.measure(f.method, every / static_cast<double>(n0 << k)));
+      describe(f);
+    }
   }
   if (rep.fits.empty())
     fail(scene, "integrator.method", "no method to consider (known: " + method_names() + ")");

@@ -2,6 +2,7 @@
 // Values and sources: ../shared/reference/integrators.md (docs/methods.md).
 #include "arnoldweb/methods.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -24,6 +25,8 @@ Method composition(std::string name, std::string title, std::string source, int 
   for (std::size_t i = 0; i + 1 < w.size(); ++i) m.kick.push_back((w[i] + w[i + 1]) / 2);
   m.kick.push_back(w.back() / 2);
   m.stability = stability;
+  m.eps_orders = {order};
+  m.family = "composition";
   return m;
 }
 
@@ -49,7 +52,44 @@ Method srkn(std::string name, std::string title, int order, std::vector<double> 
   m.kick = std::move(b);
   m.drift = std::move(a);
   m.stability = stability;
+  m.eps_orders = {order};
+  m.rkn = true;
+  m.family = "rkn";
   return m;
+}
+
+// A method for near-integrable H = A + eps B given as its whole sequence: drift-first
+// (ABA: D a0 K b1 D a1 ... K b_s D a_s; `kicks` b1..b_s) or kick-first (BAB: K b0 D a0
+// ... D a_{s-1} K b_s; `drifts` a0..a_{s-1}). eps_orders as in Method.
+Method near_integrable(std::string name, std::string title, std::string source,
+                       std::vector<int> eps_orders, bool kick_first, std::vector<double> drifts,
+                       std::vector<double> kicks, double stability) {
+  Method m;
+  m.name = std::move(name);
+  m.title = std::move(title);
+  m.source = std::move(source);
+  m.order = *std::min_element(eps_orders.begin(), eps_orders.end());
+  m.eps_orders = std::move(eps_orders);
+  m.kick_first = kick_first;
+  m.drift = std::move(drifts);
+  if (kick_first) {
+    m.stages = static_cast<int>(m.drift.size());
+    m.kick = std::move(kicks);
+  } else {
+    m.stages = static_cast<int>(kicks.size());
+    m.kick.push_back(0.0);  // drift-first tables have no b_0
+    m.kick.insert(m.kick.end(), kicks.begin(), kicks.end());
+  }
+  m.stability = stability;
+  m.family = "near-integrable";
+  return m;
+}
+
+// v followed by its mirror image; `repeat_centre`: the last element appears twice.
+std::vector<double> mirrored(std::vector<double> v, bool repeat_centre) {
+  const std::size_t n = v.size();
+  for (std::size_t i = repeat_centre ? n : n - 1; i-- > 0;) v.push_back(v[i]);
+  return v;
 }
 
 std::vector<Method> build() {
@@ -74,6 +114,8 @@ std::vector<Method> build() {
     m.drift = {xi, chi, 1 - 2 * (chi + xi), chi, xi};
     m.kick = {0.0, (1 - 2 * lambda) / 2, lambda, lambda, (1 - 2 * lambda) / 2};
     m.stability = 2.989;
+    m.eps_orders = {4};
+    m.family = "composition";
     all.push_back(m);
   }
 
@@ -135,6 +177,94 @@ std::vector<Method> build() {
                   0.102799849391796440698},
                  1.708453070787281584668),
       2.357));
+
+  // ---- Methods for near-integrable H = A + eps B (A = |P|^2/2, the drift; B = V, the
+  // kick; eps_eff = 2/E here). Orders (p, q, r): error O(eps h^p + eps^2 h^q + eps^3 h^r).
+  // Coefficients to 20+ digits from the closed forms or the cited tables;
+  // tests/test_method_tables.cpp checks every order numerically (docs/methods.md).
+
+  // Laskar & Robutel, Celest. Mech. Dyn. Astron. 80 (2001) 39, "High order symplectic
+  // integrators for perturbed Hamiltonian systems": SABA_n (drift-first, drifts at the
+  // Gauss-Legendre nodes, kicks the Gauss weights) and SBAB_n (kick-first, Gauss-Lobatto),
+  // O(eps h^2n + eps^2 h^2). SBAB_1 is `leapfrog`.
+  const char* lr2001 = "Laskar & Robutel, Celest. Mech. Dyn. Astron. 80 (2001) 39";
+  all.push_back(near_integrable("saba1", "Laskar-Robutel SABA1 (drift-first leapfrog)", lr2001, {2}, false,
+                                {0.5, 0.5}, {1.0}, 2.000));
+  {  // c1 = 1/2 - sqrt(3)/6, c2 = sqrt(3)/3; d1 = 1/2
+    const double c1 = 0.21132486540518711774542560974902127, c2 = 0.57735026918962576450914878050195746;
+    all.push_back(near_integrable("saba2", "Laskar-Robutel SABA2", lr2001, {4, 2}, false, {c1, c2, c1},
+                                  {0.5, 0.5}, 2.632));
+  }
+  {  // c1 = 1/2 - sqrt(15)/10, c2 = sqrt(15)/10; d1 = 5/18, d2 = 4/9
+    const double c1 = 0.11270166537925831148207346002176004, c2 = 0.38729833462074168851792653997823996;
+    all.push_back(near_integrable("saba3", "Laskar-Robutel SABA3", lr2001, {6, 2}, false,
+                                  mirrored({c1, c2}, true), {5.0 / 18, 4.0 / 9, 5.0 / 18}, 2.887));
+  }
+  {  // c1 = 1/2 - sqrt(525 + 70 sqrt 30)/70, c2 = (sqrt(525 + 70 sqrt 30) - sqrt(525 - 70 sqrt 30))/70,
+     // c3 = sqrt(525 - 70 sqrt 30)/35; d1 = 1/4 - sqrt(30)/72, d2 = 1/4 + sqrt(30)/72
+    const double c1 = 0.069431844202973712388026755553595247, c2 = 0.26057763400459815521064036489478241,
+                 c3 = 0.33998104358485626480266575910324469;
+    const double d1 = 0.17392742256872692868653197461099970, d2 = 0.32607257743127307131346802538900030;
+    all.push_back(near_integrable("saba4", "Laskar-Robutel SABA4", lr2001, {8, 2}, false,
+                                  mirrored({c1, c2, c3}, false), mirrored({d1, d2}, true), 3.010));
+  }
+  // SBAB2: d1 = 1/6, d2 = 2/3; c = 1/2
+  all.push_back(near_integrable("sbab2", "Laskar-Robutel SBAB2", lr2001, {4, 2}, true, {0.5, 0.5},
+                                {1.0 / 6, 2.0 / 3, 1.0 / 6}, 2.449));
+  {  // c2 = 1/2 - sqrt(5)/10, c3 = sqrt(5)/5; d1 = 1/12, d2 = 5/12
+    const double c2 = 0.27639320225002103035908263312687237, c3 = 0.44721359549995793928183473374625525;
+    all.push_back(near_integrable("sbab3", "Laskar-Robutel SBAB3", lr2001, {6, 2}, true, {c2, c3, c2},
+                                  {1.0 / 12, 5.0 / 12, 5.0 / 12, 1.0 / 12}, 2.931));
+  }
+  {  // c2 = 1/2 - sqrt(21)/14, c3 = sqrt(21)/14; d1 = 1/20, d2 = 49/180, d3 = 16/45
+    const double c2 = 0.17267316464601142810085377187657294, c3 = 0.32732683535398857189914622812342706;
+    all.push_back(near_integrable("sbab4", "Laskar-Robutel SBAB4", lr2001, {8, 2}, true,
+                                  mirrored({c2, c3}, true), mirrored({1.0 / 20, 49.0 / 180, 16.0 / 45}, false),
+                                  2.997));
+  }
+
+  // McLachlan, BIT 35 (1995) 258, "Composition methods in the presence of small
+  // parameters": the kick-first (8,4) method with 5 force evaluations (20 digits as
+  // tabulated in the IMCCE integrator of Farres et al., Celest. Mech. Dyn. Astron. 116
+  // (2013) 141).
+  all.push_back(near_integrable(
+      "bab84", "McLachlan BAB(8,4)", "McLachlan, BIT 35 (1995) 258", {8, 4}, true,
+      mirrored({-0.00758691311877447385, 0.31721827797316981388, 0.38073727029120931994}, false),
+      mirrored({0.81186273854451628884, -0.67748039953216912289, 0.36561766098765283405}, true), 2.974));
+
+  // Blanes, Casas, Farres, Laskar, Makazaga & Murua, Appl. Numer. Math. 68 (2013) 58,
+  // "New families of symplectic splitting methods for numerical integration in dynamical
+  // astronomy": the drift-first ABA(10,4) (s = 7), ABA(8,6,4) (s = 7) and ABA(10,6,4)
+  // (s = 8), 40 digits as printed there (also in REBOUND's SABA integrator).
+  const char* bcflmm = "Blanes, Casas, Farres, Laskar, Makazaga & Murua, Appl. Numer. Math. 68 (2013) 58";
+  all.push_back(near_integrable(
+      "aba104", "Blanes et al. ABA(10,4)", bcflmm, {10, 4}, false,
+      mirrored({0.04706710064597250612947887637243678556564, 0.1847569354170881069247376193702560968574,
+                0.2827060056798362053243616565541452479160, -0.01453004174289681837857815229683813033908},
+               true),
+      mirrored({0.1188819173681970199453503950853885936957, 0.2410504605515015657441667865901651105675,
+                -0.2732866667053238060543113981664559460630, 0.8267085775712504407295884329818044835997},
+               false),
+      3.090));
+  all.push_back(near_integrable(
+      "aba864", "Blanes et al. ABA(8,6,4)", bcflmm, {8, 6, 4}, false,
+      mirrored({0.0711334264982231177779387300061549964174, 0.241153427956640098736487795326289649618,
+                0.521411761772814789212136078067994229991, -0.333698616227678005726562603400438876027},
+               true),
+      mirrored({0.183083687472197221961703757166430291072, 0.310782859898574869507522291054262796375,
+                -0.0265646185119588006972121379164987592663, 0.0653961422823734184559721793911134363710},
+               false),
+      3.142));
+  all.push_back(near_integrable(
+      "aba1064", "Blanes et al. ABA(10,6,4)", bcflmm, {10, 6, 4}, false,
+      mirrored({0.03809449742241219545697532230863756534060, 0.1452987161169137492940200726606637497442,
+                0.2076276957255412507162056113249882065158, 0.4359097036515261592231548624010651844006,
+                -0.6538612258327867093807117373907094120024},
+               false),
+      mirrored({0.09585888083707521061077150377145884776921, 0.2044461531429987806805077839164344779763,
+                0.2170703479789911017143385924306336714532, -0.01737538195906509300561788011852699719871},
+               true),
+      3.146));
   return all;
 }
 
@@ -149,6 +279,12 @@ const Method& find_method(const std::string& name) {
   for (const Method& m : methods())
     if (m.name == name) return m;
   throw std::out_of_range("unknown method '" + name + "' (known: " + method_names() + ")");
+}
+
+std::string eps_order_string(const Method& m) {
+  std::string s = "(";
+  for (std::size_t i = 0; i < m.eps_orders.size(); ++i) s += (i ? "," : "") + std::to_string(m.eps_orders[i]);
+  return s + ")";
 }
 
 std::string method_names() {
