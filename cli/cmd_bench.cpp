@@ -1,9 +1,9 @@
 // arnoldweb bench: throughput against N on every device with the plain
 // baselines timed in the same process, the cost of each effect, GPU memory
-// of large runs (bench/throughput/bench.hpp; docs/performance.md).
+// of large runs (arnoldweb/bench.hpp, built in bench/; docs/performance.md).
 #include <iostream>
 
-#include "bench.hpp"
+#include "arnoldweb/bench.hpp"
 #include "command.hpp"
 
 namespace arnoldweb::cli {

@@ -1,5 +1,5 @@
 // arnoldweb bench: see bench.hpp.
-#include "bench.hpp"
+#include "arnoldweb/bench.hpp"
 
 #include <unistd.h>
 
@@ -373,6 +373,7 @@ void apply_preset(Options& o) {
   }
 }
 
+
 }  // namespace
 
 void add_options(CLI::App* c, Options& o) {
@@ -420,110 +421,142 @@ void add_options(CLI::App* c, Options& o) {
   c->add_option("--preset", o.preset, "ci (seconds), dev (a few minutes on 2 cores), gpu (GPU machine)");
 }
 
-int run(Options o, const std::string& command, std::ostream& log) {
-  apply_preset(o);
-  if (o.sizes.empty()) o.sizes = {65536, 1048576, 4194304};
-  if (o.cpu_sizes.empty()) o.cpu_sizes = {4096, 16384};
-  fs::create_directories(o.out_dir);
-  Report rep;
-  rep.date = today_utc();
-  rep.host = hostname();
-  rep.command = command;
-  int failures = 0;
+namespace {
 
+// What the stages of one bench run share.
+struct Session {
+  Options& o;
+  std::ostream& log;
+  Report rep;
+  int failures = 0;
   std::vector<DeviceInfo> devices;
+  std::vector<std::string> cuda_ids;
+  bool any_cpu = false, any_gpu = false;
+};
+
+// The devices asked for, described in the log.
+void open_session(Session& s, const std::string& command) {
+  Options& o = s.o;
+  std::ostream& log = s.log;
+  s.rep.date = today_utc();
+  s.rep.host = hostname();
+  s.rep.command = command;
   for (const auto& d : list_devices())
     if (o.devices.empty() || std::find(o.devices.begin(), o.devices.end(), d.id) != o.devices.end())
-      devices.push_back(d);
-  log << "arnoldweb bench: Yoshida-6, E = " << o.energy << ", h = " << o.step << " T, " << rep.date << " on "
-      << rep.host << "\n";
-  for (const auto& d : devices) log << "  " << d.id << ": " << d.name << " (" << d.version << ")\n";
+      s.devices.push_back(d);
+  log << "arnoldweb bench: Yoshida-6, E = " << o.energy << ", h = " << o.step << " T, " << s.rep.date << " on "
+      << s.rep.host << "\n";
+  for (const auto& d : s.devices) log << "  " << d.id << ": " << d.name << " (" << d.version << ")\n";
   for (const auto& p : backend_problems()) log << "  note: " << p << "\n";
   const NaiveCuda& nc = naive_cuda();
   log << "  naive CUDA baseline: " << (nc ? nc.path : nc.problem) << "\n";
   log.flush();
+  s.any_cpu = std::any_of(s.devices.begin(), s.devices.end(), [](const DeviceInfo& d) { return d.is_cpu; });
+  s.any_gpu = std::any_of(s.devices.begin(), s.devices.end(), [](const DeviceInfo& d) { return !d.is_cpu; });
+  for (const auto& d : s.devices)
+    if (d.backend == "cuda") s.cuda_ids.push_back(d.id);
+}
 
-  const bool any_cpu = std::any_of(devices.begin(), devices.end(), [](const DeviceInfo& d) { return d.is_cpu; });
-  const bool any_gpu = std::any_of(devices.begin(), devices.end(), [](const DeviceInfo& d) { return !d.is_cpu; });
-  std::vector<std::string> cuda_ids;
-  for (const auto& d : devices)
-    if (d.backend == "cuda") cuda_ids.push_back(d.id);
-
-  // ---- Figure 1: throughput against N
-  std::vector<Row> fig;
-  if (o.figure) {
-    for (const auto& d : devices) {
-      std::unique_ptr<Backend> b;
-      try {
-        b = open_backend(d.id);
-      } catch (const std::exception& e) {
-        Row r;
-        r.kind = "library";
-        r.device = d.id;
-        r.name = d.name;
-        r.note = e.what();
-        fig.push_back(r);
-        ++failures;
-        continue;
-      }
-      const auto& sizes = d.is_cpu ? o.cpu_sizes : o.sizes;
-      const std::int64_t steps = d.is_cpu ? o.cpu_steps : o.steps;
-      for (const auto& prec : o.precisions)
-        for (const auto& var : o.variants)
-          for (std::uint64_t n : sizes) {
-            Row r = measure_library(*b, o, "library", var, prec, o.math, n, steps);
-            if (!r.note.empty()) ++failures;
-            print_rows(log, {r}, false);
-            fig.push_back(r);
-          }
+// The library's throughput against N on every device.
+void library_rows(Session& s, std::vector<Row>& fig) {
+  const Options& o = s.o;
+  std::ostream& log = s.log;
+  int& failures = s.failures;
+  const auto& devices = s.devices;
+  for (const auto& d : devices) {
+    std::unique_ptr<Backend> b;
+    try {
+      b = open_backend(d.id);
+    } catch (const std::exception& e) {
+      Row r;
+      r.kind = "library";
+      r.device = d.id;
+      r.name = d.name;
+      r.note = e.what();
+      fig.push_back(r);
+      ++failures;
+      continue;
     }
-    // ---- baselines, same N, steps and initial states
-    if (o.baselines) {
-      std::uint64_t nmax = 0;
-      if (any_cpu) nmax = std::max(nmax, *std::max_element(o.cpu_sizes.begin(), o.cpu_sizes.end()));
-      if (!cuda_ids.empty()) nmax = std::max(nmax, *std::max_element(o.sizes.begin(), o.sizes.end()));
-      std::vector<double> init;
-      if (nmax) {
-        const auto t0 = clock::now();
-        init = initial_states(o, nmax);
-        log << "baselines: initial states of " << nmax << " trajectories from the library in "
-            << fmt(std::chrono::duration<double>(clock::now() - t0).count()) << " s\n";
-      }
-      for (const auto& prec : o.precisions) {
-        if (any_cpu)
-          for (std::uint64_t n : o.cpu_sizes) {
-            Row r = measure_baseline(o, "naive-openmp", 0, init, prec, n, o.cpu_steps);
-            print_rows(log, {r}, false);
-            fig.push_back(r);
-          }
-        if (any_gpu && nc)
-          for (const auto& id : cuda_ids)
-            for (std::uint64_t n : o.sizes) {
-              Row r = measure_baseline(o, "naive-cuda", std::stoi(id.substr(5)), init, prec, n, o.steps);
-              if (!r.note.empty()) ++failures;
-              print_rows(log, {r}, false);
-              fig.push_back(r);
-            }
-      }
-      // ratios: CPU devices to the OpenMP baseline, GPUs to the first CUDA baseline
-      for (Row& r : fig) {
-        if (r.kind != "library" || r.rate <= 0) continue;
-        const std::string want = r.cpu ? "naive-openmp" : (cuda_ids.empty() ? "" : "naive-" + cuda_ids.front());
-        for (const Row& b : fig)
-          if (b.kind == "baseline" && b.device == want && b.precision == r.precision && b.n == r.n &&
-              b.steps == r.steps && b.rate > 0) {
-            r.baseline = b.device;
-            r.ratio = r.rate / b.rate;
-          }
-      }
-    }
-    log << "\nFigure 1: throughput against N (Yoshida-6, E = " << o.energy << ", h = " << o.step
-        << " T; ratio to the baseline at the same N, steps and precision)\n";
-    print_rows(log, fig, true);
+    const auto& sizes = d.is_cpu ? o.cpu_sizes : o.sizes;
+    const std::int64_t steps = d.is_cpu ? o.cpu_steps : o.steps;
+    for (const auto& prec : o.precisions)
+      for (const auto& var : o.variants)
+        for (std::uint64_t n : sizes) {
+          Row r = measure_library(*b, o, "library", var, prec, o.math, n, steps);
+          if (!r.note.empty()) ++failures;
+          print_rows(log, {r}, false);
+          fig.push_back(r);
+        }
   }
-  rep.rows = fig;
+}
 
-  // ---- the cost of effects
+// The baselines at the same N, steps and initial states, and the ratios.
+void baseline_rows(Session& s, std::vector<Row>& fig) {
+  const Options& o = s.o;
+  std::ostream& log = s.log;
+  int& failures = s.failures;
+  const bool any_cpu = s.any_cpu, any_gpu = s.any_gpu;
+  const auto& cuda_ids = s.cuda_ids;
+  const NaiveCuda& nc = naive_cuda();
+  if (!o.baselines) return;
+  std::uint64_t nmax = 0;
+  if (any_cpu) nmax = std::max(nmax, *std::max_element(o.cpu_sizes.begin(), o.cpu_sizes.end()));
+  if (!cuda_ids.empty()) nmax = std::max(nmax, *std::max_element(o.sizes.begin(), o.sizes.end()));
+  std::vector<double> init;
+  if (nmax) {
+    const auto t0 = clock::now();
+    init = initial_states(o, nmax);
+    log << "baselines: initial states of " << nmax << " trajectories from the library in "
+        << fmt(std::chrono::duration<double>(clock::now() - t0).count()) << " s\n";
+  }
+  for (const auto& prec : o.precisions) {
+    if (any_cpu)
+      for (std::uint64_t n : o.cpu_sizes) {
+        Row r = measure_baseline(o, "naive-openmp", 0, init, prec, n, o.cpu_steps);
+        print_rows(log, {r}, false);
+        fig.push_back(r);
+      }
+    if (any_gpu && nc)
+      for (const auto& id : cuda_ids)
+        for (std::uint64_t n : o.sizes) {
+          Row r = measure_baseline(o, "naive-cuda", std::stoi(id.substr(5)), init, prec, n, o.steps);
+          if (!r.note.empty()) ++failures;
+          print_rows(log, {r}, false);
+          fig.push_back(r);
+        }
+  }
+  // ratios: CPU devices to the OpenMP baseline, GPUs to the first CUDA baseline
+  for (Row& r : fig) {
+    if (r.kind != "library" || r.rate <= 0) continue;
+    const std::string want = r.cpu ? "naive-openmp" : (cuda_ids.empty() ? "" : "naive-" + cuda_ids.front());
+    for (const Row& b : fig)
+      if (b.kind == "baseline" && b.device == want && b.precision == r.precision && b.n == r.n &&
+          b.steps == r.steps && b.rate > 0) {
+        r.baseline = b.device;
+        r.ratio = r.rate / b.rate;
+      }
+  }
+}
+
+// Figure 1: throughput against N, with the baselines.
+void figure_table(Session& s) {
+  if (!s.o.figure) return;
+  std::vector<Row> fig;
+  library_rows(s, fig);
+  baseline_rows(s, fig);
+  s.log << "\nFigure 1: throughput against N (Yoshida-6, E = " << s.o.energy << ", h = " << s.o.step
+        << " T; ratio to the baseline at the same N, steps and precision)\n";
+  print_rows(s.log, fig, true);
+  s.rep.rows = fig;
+}
+
+// The cost of every effect against the bare map.
+void effects_table(Session& s) {
+  const Options& o = s.o;
+  std::ostream& log = s.log;
+  int& failures = s.failures;
+  const auto& devices = s.devices;
+  Report& rep = s.rep;
   std::vector<Row> eff;
   if (o.effects) {
     const std::vector<std::string> vars = {"bare", "default", "energy_limit", "final_states", "confine", "zoom", "frames"};
@@ -556,7 +589,15 @@ int run(Options o, const std::string& command, std::ostream& log) {
     rep.rows.insert(rep.rows.end(), eff.begin(), eff.end());
   }
 
-  // ---- device memory of large map runs
+}
+
+// Device memory of large map runs.
+void memory_table(Session& s) {
+  const Options& o = s.o;
+  std::ostream& log = s.log;
+  int& failures = s.failures;
+  const auto& devices = s.devices;
+  Report& rep = s.rep;
   if (!o.memory_sizes.empty()) {
     std::ofstream mf(fs::path(o.out_dir) / "memory.csv");
     mf << "device,name,trajectories,computed_bytes,measured_bytes\n";
@@ -582,7 +623,15 @@ int run(Options o, const std::string& command, std::ostream& log) {
     }
   }
 
-  // ---- a whole scene, end to end (e.g. the paper's Figure 3)
+}
+
+// A whole scene, end to end (e.g. the paper's Figure 3).
+void scene_rows(Session& s) {
+  const Options& o = s.o;
+  std::ostream& log = s.log;
+  int& failures = s.failures;
+  const auto& devices = s.devices;
+  Report& rep = s.rep;
   if (!o.scene.empty()) {
     std::vector<Row> sc;
     for (const auto& d : devices) {
@@ -625,6 +674,12 @@ int run(Options o, const std::string& command, std::ostream& log) {
     rep.rows.insert(rep.rows.end(), sc.begin(), sc.end());
   }
 
+}
+
+void write_report(Session& s) {
+  const Options& o = s.o;
+  std::ostream& log = s.log;
+  Report& rep = s.rep;
   write_csv(fs::path(o.out_dir) / "bench.csv", rep.rows);
   write_json(fs::path(o.out_dir) / "bench.json", rep, o);
   log << "\nwrote " << (fs::path(o.out_dir) / "bench.csv").string() << ", bench.json\n";
@@ -639,7 +694,23 @@ int run(Options o, const std::string& command, std::ostream& log) {
     log << "plot: python3 " << script << " " << (fs::path(o.out_dir) / "bench.csv").string() << " "
         << (fs::path(o.out_dir) / "bench_throughput.png").string() << "\n";
   }
-  return failures ? 1 : 0;
+}
+
+}  // namespace
+
+int run(Options o, const std::string& command, std::ostream& log) {
+  apply_preset(o);
+  if (o.sizes.empty()) o.sizes = {65536, 1048576, 4194304};
+  if (o.cpu_sizes.empty()) o.cpu_sizes = {4096, 16384};
+  fs::create_directories(o.out_dir);
+  Session s{o, log, {}, 0, {}, {}, false, false};
+  open_session(s, command);
+  figure_table(s);
+  if (o.effects) effects_table(s);
+  if (!o.memory_sizes.empty()) memory_table(s);
+  if (!o.scene.empty()) scene_rows(s);
+  write_report(s);
+  return s.failures ? 1 : 0;
 }
 
 }  // namespace arnoldweb::bench

@@ -3,7 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
-#include "bench.hpp"
+#include "arnoldweb/bench.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"arnoldweb_bench: throughput against N on every device, with the naive baselines"};
