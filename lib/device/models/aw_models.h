@@ -3,6 +3,8 @@
  * A model is one header in this folder that defines, with a fixed order of
  * operations (the same bits on every backend):
  *   aw_model_force(s, rp)          F = -grad V at s->u (turns) into s->f
+ *   aw_model_force_hessian(s, rp, hess)  the same F, and the Hessian of V
+ *                                  (xx, yy, zz, xy, xz, yz) from the same sin/cos
  *   aw_model_potential(ux, uy, uz, rp)   V
  *   aw_model_kinetic(px, py, pz, rp)     T
  *   aw_model_drift(s, d, rp)       u += d dT/dP (d in turns per unit of dT/dP)

@@ -26,6 +26,30 @@ AW_FN void aw_model_force(aw_lstate* s, AW_CONSTANT aw_rparams* rp) {
   s->fz = AW_R(4.0) * ((cx * cy) * (sz * cz));
 }
 
+/* The force and the Hessian of V (d^2V / dx_i dx_j, radians) at s->u, from
+ * the same three sincos: hess = (xx, yy, zz, xy, xz, yz). For the tangent
+ * dynamics of the chaos indicators and for force-gradient methods.
+ *   V_xx = V_yy = -2 cx cy cz^2,  V_zz = -4 cx cy (cz^2 - sz^2),
+ *   V_xy = 2 sx sy cz^2,  V_xz = 4 sx cy sz cz,  V_yz = 4 cx sy sz cz. */
+AW_FN void aw_model_force_hessian(aw_lstate* s, AW_CONSTANT aw_rparams* rp, lreal* hess) {
+  lreal sx, cx, sy, cy, sz, cz;
+  aw_sincos2pi(s->ux, &sx, &cx);
+  aw_sincos2pi(s->uy, &sy, &cy);
+  aw_sincos2pi(s->uz, &sz, &cz);
+  lreal q = AW_R(2.0) * (cz * cz); /* 1 + cos 2z */
+  lreal szcz = sz * cz;
+  lreal cxcy = cx * cy;
+  s->fx = (sx * cy) * q;
+  s->fy = (cx * sy) * q;
+  s->fz = AW_R(4.0) * (cxcy * szcz);
+  hess[0] = -(cxcy * q);
+  hess[1] = hess[0];
+  hess[2] = AW_R(-4.0) * (cxcy * (cz * cz - sz * sz));
+  hess[3] = (sx * sy) * q;
+  hess[4] = AW_R(4.0) * ((sx * cy) * szcz);
+  hess[5] = AW_R(4.0) * ((cx * sy) * szcz);
+}
+
 AW_FN lreal aw_model_potential(lreal ux, lreal uy, lreal uz, AW_CONSTANT aw_rparams* rp) {
   lreal sx, cx, sy, cy, sz, cz;
   aw_sincos2pi(ux, &sx, &cx);
