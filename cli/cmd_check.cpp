@@ -21,13 +21,19 @@ void add_check_command(CLI::App& app, Action& action) {
   c->add_flag("--force,-f", f->force, "Check as `run --force` would (replacing an earlier output directory)");
   c->callback([&action, f] {
     action = [f] {
-      const PreparedJob p = prepare_job(f->scene, f->force);
+      std::string device_warning;
+      const PreparedJob p = prepare_job(f->scene, f->force, &device_warning);
       const Plan& plan = p.job.main();
       const std::string dev = plan.scene.device == "auto" ? default_device_id() + " (auto)" : plan.scene.device;
       print_plan(std::cout, plan, dev);
       for (std::size_t k = 1; k < p.job.parts.size(); ++k)
         std::cout << "panel        " << p.job.parts[k].name << ": " << short_number(p.job.parts[k].plan.trajectory_steps)
                   << " trajectory-steps (" << p.job.parts[k].title << ")\n";
+      const MemoryEstimate m = estimate_memory(plan);
+      std::cout << "memory       about " << short_number(m.device_bytes / 1048576.0) << " MiB on the device, "
+                << short_number(m.host_bytes / 1048576.0) << " MiB in this process (largest launch "
+                << m.max_chunk << " trajectories)\n";
+      if (!device_warning.empty()) std::cout << "warning      " << device_warning << "\n";
       std::cout << "outputs      " << p.out_dir << " (about " << short_number(p.output.expected_bytes / 1e6)
                 << " MB at most)\n";
       return 0;

@@ -42,7 +42,9 @@ struct PreparedJob {
   OutputOptions output;
   std::string out_dir;  // normalised
 };
-PreparedJob prepare_job(const SceneArgs& args, bool force);
+// Also refuses a job that does not fit the device's or this process's memory;
+// where the device is not on this machine, `check` only warns (warning).
+PreparedJob prepare_job(const SceneArgs& args, bool force, std::string* device_warning = nullptr);
 
 void add_devices_command(CLI::App& app, Action& action);
 void add_methods_command(CLI::App& app, Action& action);

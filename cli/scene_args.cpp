@@ -26,7 +26,7 @@ Scene load_scene_args(const SceneArgs& a) {
   return load_scene(a.scene, sets, labels);
 }
 
-PreparedJob prepare_job(const SceneArgs& args, bool force) {
+PreparedJob prepare_job(const SceneArgs& args, bool force, std::string* device_warning) {
   PreparedJob p;
   // integrator.step = "auto": a pilot on the cpu backend (in portable math
   // the same bits as every device), opened only when a part asks for it
@@ -38,6 +38,16 @@ PreparedJob prepare_job(const SceneArgs& args, bool force) {
   p.output.force = force;
   p.output.scene_file = args.scene;
   p.output.expected_bytes = estimate_output_bytes(p.job);
+  // memory: the device's and this process's, before anything is computed
+  DeviceInfo device;
+  try {
+    device = find_device(p.job.main().scene.device);
+  } catch (const DeviceError& e) {
+    if (!device_warning) throw;
+    *device_warning = e.what();
+  }
+  const std::uint64_t host = available_memory();
+  for (const JobPart& part : p.job.parts) check_memory(part.plan, device, host);
   p.out_dir = check_output_dir(p.job.main().scene.output_dir, p.output);
   return p;
 }

@@ -22,6 +22,7 @@ struct DeviceInfo {
   bool fp64 = true;
   unsigned compute_units = 0;
   std::uint64_t memory = 0;  // bytes of global memory
+  std::uint64_t max_allocation = 0;  // bytes of the largest single buffer (0: memory)
   bool is_cpu = false;
 };
 
@@ -69,5 +70,12 @@ std::unique_ptr<Backend> open_backend(const std::string& id);
 
 // The id "auto" resolves to on this machine.
 std::string default_device_id();
+
+// The description of the device `id` ("auto" as open_backend resolves it)
+// without opening it; throws DeviceError like open_backend when there is none.
+DeviceInfo find_device(const std::string& id);
+
+// Memory this process can still use (MemAvailable), in bytes; 0 if unknown.
+std::uint64_t available_memory();
 
 }  // namespace arnoldweb

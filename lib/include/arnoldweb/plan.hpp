@@ -84,4 +84,23 @@ struct Plan {
 // resolved first (resolve_step, accuracy.hpp).
 Plan make_plan(const Scene& scene);
 
+// What a plan needs in memory (estimates from the plan alone, upper bounds).
+struct MemoryEstimate {
+  std::uint64_t max_chunk = 0;  // the largest launch, in trajectories
+  double histogram_bytes = 0;   // the histograms on the device (32-bit counts + 64-bit totals)
+  double device_bytes = 0;      // everything on the device, for launches of max_chunk
+  double state_bytes = 0;       // the state records of all trajectories, in this process
+  double host_bytes = 0;        // everything in this process (results, copies while writing)
+};
+MemoryEstimate estimate_memory(const Plan& plan);
+
+// The largest launch the runner makes for this plan (trajectories).
+std::uint64_t largest_chunk(const Plan& plan);
+
+struct DeviceInfo;
+// Refuses, before anything is computed, a plan that does not fit the device
+// (its memory and largest buffer) or this process (host_available bytes; 0:
+// unknown): SceneError naming the key to change, with the numbers.
+void check_memory(const Plan& plan, const DeviceInfo& device, std::uint64_t host_available);
+
 }  // namespace arnoldweb

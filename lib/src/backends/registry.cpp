@@ -1,5 +1,6 @@
 // arnoldweb: finding devices and opening backends by id.
 #include <cstdlib>
+#include <fstream>
 #include <sstream>
 
 #include "arnoldweb/device.hpp"
@@ -58,12 +59,43 @@ std::string default_device_id() {
   return "cpu";
 }
 
+namespace {
+
+std::string resolve_id(const std::string& requested) {
+  if (!requested.empty() && requested != "auto") return requested;
+  const char* env = std::getenv("ARNOLDWEB_DEVICE");
+  return (env && *env) ? env : default_device_id();
+}
+
+[[noreturn]] void no_such_device(const std::string& id) {
+  const Inventory& inv = inventory();
+  const std::string kind = id.substr(0, id.find(':'));
+  std::string why;
+  for (const auto& p : inv.problems)
+    if (p.rfind(kind, 0) == 0) why += "\n" + p;
+  throw DeviceError(id, "", 0, "no such device; devices present:" + device_list(inv.devices) + why);
+}
+
+}  // namespace
+
+DeviceInfo find_device(const std::string& requested) {
+  const std::string id = resolve_id(requested);
+  for (const auto& d : inventory().devices)
+    if (d.id == id) return d;
+  no_such_device(id);
+}
+
+std::uint64_t available_memory() {
+  std::ifstream in("/proc/meminfo");
+  std::string line;
+  const std::string key = "MemAvailable:";
+  while (std::getline(in, line))
+    if (line.compare(0, key.size(), key) == 0) return std::strtoull(line.c_str() + key.size(), nullptr, 10) * 1024;
+  return 0;
+}
+
 std::unique_ptr<Backend> open_backend(const std::string& requested) {
-  std::string id = requested;
-  if (id.empty() || id == "auto") {
-    const char* env = std::getenv("ARNOLDWEB_DEVICE");
-    id = (env && *env) ? env : default_device_id();
-  }
+  const std::string id = resolve_id(requested);
   if (id == "cpu") return detail::make_cpu_backend();
   auto colon = id.find(':');
   const std::string kind = id.substr(0, colon);
@@ -89,11 +121,7 @@ std::unique_ptr<Backend> open_backend(const std::string& requested) {
     return detail::make_cuda_backend(index);
 #endif
   }
-  std::string why;
-  for (const auto& p : inv.problems)
-    if (p.rfind(kind, 0) == 0) why += "\n" + p;
-  throw DeviceError(id, "", 0,
-                    "no such device; devices present:" + device_list(inv.devices) + why);
+  no_such_device(id);
 }
 
 namespace detail {
@@ -111,30 +139,10 @@ std::uint64_t floor_pow2(std::uint64_t n) {
   return p;
 }
 
-void check_device_memory(const Plan& plan, const DeviceInfo& dev, std::uint64_t max_chunk,
-                         std::uint64_t max_alloc) {
-  const double map_bytes = static_cast<double>(plan.hist_size) * 12.0;  // 32-bit chunk + 64-bit total
-  const double avail = static_cast<double>(dev.memory);
-  if (plan.hist_size && avail > 0 &&
-      (map_bytes > 0.5 * avail || plan.hist_size * 8.0 > static_cast<double>(max_alloc))) {
-    SourcePos p = plan.scene.pos("observe.velocity_map.nside");
-    throw SceneError(plan.scene.file, p.line, p.column, "observe.velocity_map.nside",
-                     "nside = " + std::to_string(plan.scene.nside) + " needs " +
-                         std::to_string(static_cast<long long>(map_bytes / 1048576.0)) +
-                         " MiB for the map; " + dev.id + " (" + dev.name + ") has " +
-                         std::to_string(static_cast<long long>(avail / 1048576.0)) +
-                         " MiB (largest buffer " +
-                         std::to_string(static_cast<long long>(max_alloc / 1048576)) +
-                         " MiB): choose a smaller nside");
-  }
-  const int real_size = plan.kernel.precision == Precision::Float ? 4 : 8;
-  double state_bytes = 0;
-  if (plan.kernel.features & AW_F_INITIAL_STATES) state_bytes += AW_STATE_REALS * real_size;
-  if (plan.kernel.features & AW_F_FINAL_STATES) state_bytes += AW_STATE_REALS * real_size + AW_STATE_INTS * 8;
-  if (avail > 0 && state_bytes * static_cast<double>(max_chunk) + map_bytes > 0.8 * avail)
-    throw DeviceError(dev.id, "", 0,
-                      "not enough memory for state records of " + std::to_string(max_chunk) +
-                          " trajectories per chunk; set ensemble.chunk smaller");
+void check_device_memory(const Plan& plan, const DeviceInfo& dev, std::uint64_t, std::uint64_t max_alloc) {
+  DeviceInfo d = dev;
+  d.max_allocation = max_alloc;
+  check_memory(plan, d, 0);
 }
 
 }  // namespace detail

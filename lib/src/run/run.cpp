@@ -10,27 +10,10 @@
 #include "run/reduction.hpp"
 
 namespace arnoldweb {
-namespace {
-
-constexpr std::uint64_t kMaxChunkStates = 1u << 20;  // trajectories per launch with state records
-constexpr std::uint64_t kMaxChunk = 1ull << 30;
-
-// The largest launch: bounded by state records, by 32-bit counts per launch
-// (windows x chunk < 2^32), by the scene's own chunk size and by the run.
-std::uint64_t max_chunk_of(const Plan& plan) {
-  const bool states = plan.scene.initial_states || plan.scene.final_states;
-  std::uint64_t m = states ? kMaxChunkStates : kMaxChunk;
-  m = std::min<std::uint64_t>(m, 4000000000ull / static_cast<std::uint64_t>(plan.windows));
-  if (plan.scene.chunk) m = plan.scene.chunk;
-  return std::max<std::uint64_t>(1, std::min(m, plan.scene.trajectories));
-}
-
-}  // namespace
-
 Result run(const Plan& plan, Backend& backend, const RunOptions& options) {
   using clock = std::chrono::steady_clock;
   const std::uint64_t n = plan.scene.trajectories;
-  const std::uint64_t max_chunk = max_chunk_of(plan);
+  const std::uint64_t max_chunk = largest_chunk(plan);
   const auto t_start = clock::now();
   backend.prepare(plan, max_chunk);
   // A launch below one wave of the device takes as long as a full wave (each

@@ -41,6 +41,7 @@ DeviceInfo describe(const compute::device& d, int index) {
   info.fp64 = d.supports_extension("cl_khr_fp64");
   info.compute_units = d.compute_units();
   info.memory = d.global_memory_size();
+  info.max_allocation = d.get_info<cl_ulong>(CL_DEVICE_MAX_MEM_ALLOC_SIZE);
   info.is_cpu = (d.type() & compute::device::cpu) != 0;
   return info;
 }

@@ -1,0 +1,97 @@
+// arnoldweb: what a plan will need in memory, on the device and in this
+// process, and the refusal (before anything is computed) of what does not fit,
+// naming the key to change and the numbers (plan.hpp).
+#include <algorithm>
+#include <cstdio>
+
+#include "arnoldweb/device.hpp"
+#include "arnoldweb/plan.hpp"
+#include "aw_params.h"
+#include "plan/checks.hpp"
+
+namespace arnoldweb {
+namespace {
+
+constexpr std::uint64_t kMaxChunkStates = 1u << 20;  // trajectories per launch with state records
+constexpr std::uint64_t kMaxChunk = 1ull << 30;
+
+std::string mib(double bytes) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.0f MiB", bytes / 1048576.0);
+  return b;
+}
+
+bool has_states(const Plan& p) { return p.scene.initial_states || p.scene.final_states; }
+
+// Bytes of the state records of one trajectory on the device, and on the host.
+double state_bytes(const Plan& p, double real_size) {
+  double b = 0;
+  if (p.scene.initial_states) b += AW_STATE_REALS * real_size;
+  if (p.scene.final_states) b += AW_STATE_REALS * real_size + AW_STATE_INTS * 8;
+  return b;
+}
+
+// The key that makes the histograms large.
+std::string histogram_key(const Plan& p) {
+  const double zoom = static_cast<double>(p.zoom_resolution) * p.zoom_resolution;
+  const double maps = static_cast<double>(p.frames) * static_cast<double>(p.npix);
+  if (zoom > maps) return "observe.zoom.resolution";
+  if (p.frames > 1 && maps > 4.0 * static_cast<double>(p.npix)) return "observe.frames.times";
+  return "observe.velocity_map.nside";
+}
+
+}  // namespace
+
+std::uint64_t largest_chunk(const Plan& plan) {
+  std::uint64_t m = has_states(plan) ? kMaxChunkStates : kMaxChunk;
+  // 32-bit counts per launch: windows * chunk must stay below 2^32
+  m = std::min<std::uint64_t>(m, 4000000000ull / static_cast<std::uint64_t>(std::max<std::int64_t>(plan.windows, 1)));
+  if (plan.scene.chunk) m = plan.scene.chunk;
+  return std::max<std::uint64_t>(1, std::min(m, plan.scene.trajectories));
+}
+
+MemoryEstimate estimate_memory(const Plan& plan) {
+  MemoryEstimate e;
+  e.max_chunk = largest_chunk(plan);
+  const double rs = plan.kernel.precision == Precision::Float ? 4 : 8;
+  const double hist = static_cast<double>(std::max<std::uint64_t>(plan.hist_size, 1));
+  e.histogram_bytes = hist * 12;  // 32-bit chunk counts and 64-bit totals
+  e.device_bytes = e.histogram_bytes + state_bytes(plan, rs) * static_cast<double>(e.max_chunk) + 1e6;
+  // in this process: the totals read back, the result's maps and frames, and
+  // the state records of every trajectory (kept per chunk, then joined, then
+  // written), besides the cpu backend's own buffers when it is the device
+  const double n = static_cast<double>(plan.scene.trajectories);
+  e.state_bytes = state_bytes(plan, 8) * n;
+  e.host_bytes = hist * 8 * 3 + e.state_bytes * 3 + 64e6;
+  return e;
+}
+
+void check_memory(const Plan& plan, const DeviceInfo& dev, std::uint64_t host_available) {
+  const MemoryEstimate e = estimate_memory(plan);
+  const std::uint64_t max_allocation = dev.max_allocation ? dev.max_allocation : dev.memory;
+  const double avail = static_cast<double>(dev.memory);
+  const std::string where = dev.id + " (" + dev.name + ")";
+  if (plan.hist_size && avail > 0 &&
+      (e.histogram_bytes > 0.5 * avail || plan.hist_size * 8.0 > static_cast<double>(max_allocation)))
+    detail::fail_at(plan.scene, histogram_key(plan),
+                    "the histograms need " + mib(e.histogram_bytes) + " on the device; " + where + " has " +
+                        mib(avail) + " (largest buffer " + mib(static_cast<double>(max_allocation)) +
+                        "): choose a smaller value");
+  if (avail > 0 && e.device_bytes > 0.8 * avail)
+    detail::fail_at(plan.scene, "ensemble.chunk",
+                    "state records of " + std::to_string(e.max_chunk) + " trajectories per launch need " +
+                        mib(e.device_bytes) + " on " + where + ", which has " + mib(avail) +
+                        ": set ensemble.chunk smaller");
+  if (host_available > 0 && e.host_bytes > static_cast<double>(host_available)) {
+    const bool states = e.state_bytes * 3 > e.host_bytes / 2;
+    detail::fail_at(plan.scene, states ? "ensemble.trajectories" : histogram_key(plan),
+                    "the run needs about " + mib(e.host_bytes) + " of memory in this process (" +
+                        (states ? "state records of " + std::to_string(plan.scene.trajectories) + " trajectories"
+                                : std::string("the histograms")) +
+                        ") and " + mib(static_cast<double>(host_available)) +
+                        " are available: choose a smaller value" +
+                        (states ? " or leave observe.initial_states / observe.final_states out" : ""));
+  }
+}
+
+}  // namespace arnoldweb
