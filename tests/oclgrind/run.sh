@@ -16,7 +16,8 @@
 #      21.10's plugin cannot follow frexp() into private memory, which the
 #      energy histogram uses; see the test case's comment).
 # Oclgrind writes its diagnostics to a log (--log); a non-empty log fails.
-# Exit 77 (skipped) with the reason when oclgrind is not installed.
+# Exit 77 (skipped) with the reason when oclgrind is not installed (exit 1
+# instead when ARNOLDWEB_REQUIRE_CHECKS=1, as in CI).
 set -euo pipefail
 tests="${1:?usage: $0 ARNOLDWEB_TESTS [OCLGRIND]}"
 oclgrind="${2:-}"
@@ -25,6 +26,8 @@ if [ -z "$oclgrind" ] || [ ! -x "$oclgrind" ]; then
 fi
 if [ -z "$oclgrind" ]; then
   echo "SKIPPED: oclgrind not found (Debian: apt-get install oclgrind)"
+  # CI (.ci/run) installs it: there a missing oclgrind is a failure
+  [ "${ARNOLDWEB_REQUIRE_CHECKS:-0}" = 1 ] && exit 1
   exit 77
 fi
 
