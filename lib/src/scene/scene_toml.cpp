@@ -47,7 +47,7 @@ std::string toml_string(const std::string& s) {
   for (std::size_t i = 0; i < s.size();) {
     const std::size_t n = utf8_length(s, i);
     if (n == 0) {
-      out += "\\uFFFD";
+      out += "\xEF\xBF\xBD";  // U+FFFD, as itself: reading back and writing again gives the same text
       ++i;
       continue;
     }
