@@ -126,9 +126,10 @@ TEST_SUITE("hard") {
   TEST_CASE("long runs: the energy error of regular and chaotic orbits shows no secular drift over 10^6 steps") {
     // |dE| sampled every 100 steps; a straight line fitted to dE(t). A
     // secular drift would make slope x duration comparable to the error's
-    // amplitude; here it is a few per cent at most, and the largest error of
-    // the last twentieth of the run is that of the first. The ctest hard.long
-    // version runs 10^7 steps.
+    // amplitude; for regular orbits it is a few per cent at most, and the
+    // largest error of the last twentieth of the run is that of the first.
+    // Chaotic orbits are held to the envelope of the whole shell (below). The
+    // ctest hard.long version runs 10^7 steps.
     const Orbit orbits[4] = {kRegular15, kChaotic15, kRegular400, kChaotic400};
     const bool chaotic[4] = {false, true, false, true};
     DriftStats st[4];
@@ -150,11 +151,21 @@ TEST_SUITE("hard") {
         CHECK(growth[k] > 1e6);
       else
         CHECK(growth[k] < 1e4);
-      CHECK(std::fabs(st[k].slope_total) < 0.1 * st[k].max_abs);
-      CHECK(st[k].last_max < 2 * st[k].first_max);
-      // the block means of a regular orbit scatter about a constant; a chaotic
-      // orbit's wander with the region it visits (dE = H - H~ depends on it)
-      if (!chaotic[k]) CHECK(std::fabs(st[k].z) < 4);
+      if (!chaotic[k]) {
+        CHECK(std::fabs(st[k].slope_total) < 0.1 * st[k].max_abs);
+        CHECK(st[k].last_max < 2 * st[k].first_max);
+        // the block means of a regular orbit scatter about a constant
+        CHECK(std::fabs(st[k].z) < 4);
+      } else {
+        // a chaotic orbit wanders through regions where the modified
+        // Hamiltonian H~ differs from H by different amounts, so its error
+        // rises and falls with the region it visits; a secular drift would
+        // take it beyond the envelope of |H - H~| over the whole shell: the
+        // largest error of an ensemble started like it, over 100 T
+        const double envelope = shell_envelope(orbits[k]);
+        std::printf("  envelope: max|dE| of 512 trajectories x 100 T %.2e\n", envelope);
+        CHECK(st[k].max_abs < 3 * envelope);
+      }
     }
   }
 

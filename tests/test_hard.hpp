@@ -246,6 +246,17 @@ struct DriftStats {
   double last_max = 0;
 };
 
+// The envelope of |H - H~| over the shell an orbit belongs to: the largest
+// energy error of 512 trajectories started like it, over 100 T on the cpu
+// backend. A chaotic orbit's error rises and falls with the region it visits;
+// a secular drift would take it beyond this.
+inline double shell_envelope(const Orbit& o) {
+  arnoldweb::Scene e = orbit_scene(o, 100.0);
+  e.trajectories = 512;
+  e.initial_states = e.final_states = false;
+  return awtest::run_on("cpu", arnoldweb::make_plan(e)).energy.max;
+}
+
 inline DriftStats energy_drift(const Orbit& o, std::int64_t steps, std::int64_t every, int blocks = 20) {
   const arnoldweb::Plan plan = arnoldweb::make_plan(orbit_scene(o, 1.0));
   core_d::aw_lstate s = orbit_start(plan, o.index);

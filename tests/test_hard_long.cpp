@@ -133,9 +133,13 @@ TEST_SUITE("hard-long") {
                   "max|dE| first 5%% %.2e, last 5%% %.2e\n",
                   orbits[k].name, st[k].duration, st[k].max_abs, st[k].slope_total, st[k].slope_total / st[k].max_abs,
                   st[k].z, st[k].first_max, st[k].last_max);
-      CHECK(std::fabs(st[k].slope_total) < 0.1 * st[k].max_abs);
-      CHECK(st[k].last_max < 2 * st[k].first_max);
-      if (!chaotic[k]) CHECK(std::fabs(st[k].z) < 4);
+      if (!chaotic[k]) {
+        CHECK(std::fabs(st[k].slope_total) < 0.1 * st[k].max_abs);
+        CHECK(st[k].last_max < 2 * st[k].first_max);
+        CHECK(std::fabs(st[k].z) < 4);
+      } else {
+        CHECK(st[k].max_abs < 3 * shell_envelope(orbits[k]));  // see the 10^6-step case
+      }
     }
   }
 

@@ -2,11 +2,11 @@
  *
  * Angles are carried in turns (u = x / 2pi), so the argument reduction of
  * sin(2 pi u) and cos(2 pi u) is exact: f = 4u - rint(4u) in [-1/2, 1/2] is
- * computed without rounding, and only r = f * pi/2 rounds once (double-double
- * pi/2 through one fma). The kernels on [-pi/4, pi/4] are the fdlibm minimax
- * polynomials (double) and the Cephes single-precision ones (float), evaluated
- * by Horner with explicit fma in a fixed order: identical bits on every
- * backend. Measured accuracy is in docs/numerics.md (tests/test_math.cpp).
+ * computed without rounding, and the kernels are polynomials in f itself
+ * (near-minimax fits of sin(pi f/2)/f and (cos(pi f/2) - 1)/f^2 in f^2,
+ * scripts/fit_sincos.py), evaluated by Horner with explicit fma in a fixed
+ * order: identical bits on every backend. Measured accuracy is in
+ * docs/numerics.md (tests/device/test_math.cpp).
  *
  * aw_atan2 is scalar (used once per trajectory and window for binning); it
  * too uses only + - * / and fma, so pixel indices agree bit for bit.
@@ -16,13 +16,6 @@
 
 #include "aw_dialect.h"
 
-#ifdef AW_FLOAT
-#define AW_PIO2_HI 1.5707963705062866f
-#define AW_PIO2_LO -4.371138828673793e-08f
-#else
-#define AW_PIO2_HI 1.5707963267948966
-#define AW_PIO2_LO 6.123233995736766e-17
-#endif
 
 /* Quadrant bookkeeping shared by both precisions: given t = 4u + AW_ROUND_MAGIC
  * (the rounding sum that gives k = rint(4u) = t - AW_ROUND_MAGIC) and the
@@ -74,36 +67,36 @@ AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) {
   lreal t = AW_FMA(AW_LSPLAT(AW_R(4.0)), u, AW_LSPLAT(AW_ROUND_MAGIC)); /* k = t - magic: rint(4u) */
   lreal k = t - AW_ROUND_MAGIC;
   lreal f = AW_FMA(AW_LSPLAT(AW_R(4.0)), u, -k); /* 4u - k: exact, in [-1/2, 1/2] */
-  lreal r = AW_FMA(f, AW_LSPLAT(AW_PIO2_HI), f * AW_PIO2_LO); /* f * pi/2, one rounding */
-  lreal z = r * r;
+  lreal w = f * f;
+  /* sin(pi f / 2) = f S(w) and cos(pi f / 2) = 1 + w C(w): polynomials in
+   * the exact reduced argument f itself (no rounded r = f pi/2), fitted
+   * near-minimax on |f| <= 1/2 (Chebyshev, scripts/fit_sincos.py; the
+   * factors of pi/2 live in the coefficients). 18 operations for both
+   * instead of fdlibm's 25 on r, with the same worst case (1.5 ulp double,
+   * 1.7 ulp float; docs/numerics.md); exact at multiples of a quarter turn. */
 #ifdef AW_FLOAT
-  /* Cephes sinf/cosf minimax kernels on [-pi/4, pi/4] */
-  lreal ps = AW_FMA(z, AW_LSPLAT(AW_R(-1.9515295891e-4)), AW_LSPLAT(AW_R(8.3321608736e-3)));
-  ps = AW_FMA(z, ps, AW_LSPLAT(AW_R(-1.6666654611e-1)));
-  lreal sr = AW_FMA(r * z, ps, r);
-  lreal pc = AW_FMA(z, AW_LSPLAT(AW_R(2.443315711809948e-5)), AW_LSPLAT(AW_R(-1.388731625493765e-3)));
-  pc = AW_FMA(z, pc, AW_LSPLAT(AW_R(4.166664568298827e-2)));
-  lreal cr = AW_FMA(z * z, pc, AW_FMA(AW_LSPLAT(AW_R(-0.5)), z, AW_LSPLAT(AW_R(1.0))));
+  lreal ps = AW_FMA(w, AW_LSPLAT(AW_R(-4.602149212814176e-03)), AW_LSPLAT(AW_R(7.968021764775542e-02)));
+  ps = AW_FMA(w, ps, AW_LSPLAT(AW_R(-6.459634776648118e-01)));
+  ps = AW_FMA(w, ps, AW_LSPLAT(AW_R(1.5707963219532366)));
+  lreal pc = AW_FMA(w, AW_LSPLAT(AW_R(9.067398984032665e-04)), AW_LSPLAT(AW_R(-2.0861528342199967e-02)));
+  pc = AW_FMA(w, pc, AW_LSPLAT(AW_R(2.536694103571085e-01)));
+  pc = AW_FMA(w, pc, AW_LSPLAT(AW_R(-1.2337005493742192)));
 #else
-  /* fdlibm __kernel_sin / __kernel_cos on [-pi/4, pi/4] */
-  lreal ps = AW_FMA(z, AW_LSPLAT(1.58969099521155010221e-10), AW_LSPLAT(-2.50507602534068634195e-08));
-  ps = AW_FMA(z, ps, AW_LSPLAT(2.75573137070700676789e-06));
-  ps = AW_FMA(z, ps, AW_LSPLAT(-1.98412698298579493134e-04));
-  ps = AW_FMA(z, ps, AW_LSPLAT(8.33333333332248946124e-03));
-  ps = AW_FMA(z, ps, AW_LSPLAT(-1.66666666666666324348e-01));
-  lreal sr = AW_FMA(r * z, ps, r);
-  lreal pc = AW_FMA(z, AW_LSPLAT(-1.13596475577881948265e-11), AW_LSPLAT(2.08757232129817482790e-09));
-  pc = AW_FMA(z, pc, AW_LSPLAT(-2.75573143513906633035e-07));
-  pc = AW_FMA(z, pc, AW_LSPLAT(2.48015872894767294178e-05));
-  pc = AW_FMA(z, pc, AW_LSPLAT(-1.38888888888741095749e-03));
-  pc = AW_FMA(z, pc, AW_LSPLAT(4.16666666666666019037e-02));
-  /* fdlibm: hz = 0.5 z, w = 1 - hz, cos r = w + (z^2 pc + ((1 - w) - hz)).
-   * 0.5 z is exact (z normal), so 1 - hz and (1 - w) - hz are one-rounding
-   * fma's of -0.5 and z: the same bits without the multiplication. (z
-   * subnormal: w = 1 and the correction vanishes in w + ..., either way.) */
-  lreal w = AW_FMA(AW_LSPLAT(-0.5), z, AW_LSPLAT(1.0));
-  lreal cr = w + AW_FMA(z * z, pc, AW_FMA(AW_LSPLAT(-0.5), z, 1.0 - w));
+  lreal ps = AW_FMA(w, AW_LSPLAT(5.633933781537854e-08), AW_LSPLAT(-3.59864335298231e-06));
+  ps = AW_FMA(w, ps, AW_LSPLAT(1.604411507421909e-04));
+  ps = AW_FMA(w, ps, AW_LSPLAT(-4.681754132340976e-03));
+  ps = AW_FMA(w, ps, AW_LSPLAT(7.969262624604301e-02));
+  ps = AW_FMA(w, ps, AW_LSPLAT(-6.459640975062443e-01));
+  ps = AW_FMA(w, ps, AW_LSPLAT(1.5707963267948966));
+  lreal pc = AW_FMA(w, AW_LSPLAT(-6.329396344967424e-09), AW_LSPLAT(4.710678405505227e-07));
+  pc = AW_FMA(w, pc, AW_LSPLAT(-2.5202039028029178e-05));
+  pc = AW_FMA(w, pc, AW_LSPLAT(9.192602745468447e-04));
+  pc = AW_FMA(w, pc, AW_LSPLAT(-2.0863480763340773e-02));
+  pc = AW_FMA(w, pc, AW_LSPLAT(2.536695079010478e-01));
+  pc = AW_FMA(w, pc, AW_LSPLAT(-1.2337005501361697));
 #endif
+  lreal sr = f * ps;
+  lreal cr = AW_FMA(w, pc, AW_LSPLAT(AW_R(1.0)));
   AW_QUADRANT_SELECT(t, sr, cr, s, c);
 }
 #endif /* AW_NATIVE_MATH */
