@@ -1,0 +1,146 @@
+// Checkpoint and resume through the CLI (issue 15, part 3): a run killed with
+// kill -9 at random moments and resumed, or stopped by SIGTERM and resumed on
+// another device, gives the digests of an uninterrupted run; a checkpoint is
+// kept beside the output directory until a resumed run consumes it; a plain
+// run beside it, a damaged checkpoint and one of another scene are refused.
+#include <doctest/doctest.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <thread>
+
+#include "arnoldweb/arnoldweb.hpp"
+#include "support.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kScene =
+    "[model]\nenergy = 15.0\n[ensemble]\ntrajectories = 100000\nchunk = 1024\n[integrator]\nstep = 0.02\n"
+    "[run]\naverage = 1.0\nduration = 2.0\ncheckpoint_every = 0.1\n[observe]\nvelocity_map = { nside = 8 }\n"
+    "energy_error = { every = 0.5 }\nfinal_states = true\n[output]\nimages = false\n";
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+nlohmann::json summary_of(const std::string& dir) {
+  std::ifstream in(dir + "/summary.json");
+  return nlohmann::json::parse(in);
+}
+
+std::vector<std::string> checkpoints_beside(const std::string& out) {
+  std::vector<std::string> found;
+  for (const auto& f : arnoldweb::find_checkpoints(out)) found.push_back(f.staging_dir);
+  return found;
+}
+
+void check_same_digests(const std::string& a, const std::string& b) {
+  const auto ja = summary_of(a), jb = summary_of(b);
+  CHECK(ja["digests"] == jb["digests"]);
+  CHECK(ja["completed"] == jb["completed"]);
+  CHECK(ja["binned"] == jb["binned"]);
+  CHECK(ja["energy_error"]["max"] == jb["energy_error"]["max"]);
+  CHECK(ja["energy_error"]["mean"] == jb["energy_error"]["mean"]);
+  CHECK(jb["interrupted"] == false);
+}
+
+}  // namespace
+
+TEST_SUITE("checkpoint") {
+  TEST_CASE("kill -9 at random moments, then resume: the digests of an uninterrupted run") {
+    const std::string root = awtest::temp_dir("kill9");
+    const std::string scene = root + "/scene.toml";
+    std::ofstream(scene) << kScene;
+    const auto t0 = std::chrono::steady_clock::now();
+    REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", root + "/plain"}) == 0);
+    const double plain_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    std::mt19937 rng(static_cast<unsigned>(::getpid()));
+    int resumed = 0;
+    for (int attempt = 0; attempt < 3; ++attempt) {
+      CAPTURE(attempt);
+      const std::string out = root + "/killed-" + std::to_string(attempt);
+      awtest::StartedCli cli = awtest::start_cli({"run", scene, "--device", "cpu", "--out", out});
+      // at a random moment between 30% and 90% of an uninterrupted run's time
+      const double at = plain_ms * (0.3 + 0.6 * std::uniform_real_distribution<double>(0, 1)(rng));
+      std::this_thread::sleep_for(std::chrono::milliseconds(static_cast<long>(at)));
+      ::kill(cli.pid, SIGKILL);
+      cli.finish();
+      // killed before its first checkpoint, or after it finished: nothing to resume
+      std::string text;
+      if (!fs::exists(out + "/summary.json")) {
+        const int rc = awtest::run_cli({"resume", out, "--quiet"}, &text);
+        CAPTURE(text);
+        if (rc == 0) ++resumed;
+        else REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", out}) == 0);
+      }
+      check_same_digests(root + "/plain", out);
+      CHECK(checkpoints_beside(out).empty());
+      // nothing but the listed outputs is left in the directory (no checkpoint temporaries)
+      const auto j = summary_of(out);
+      std::size_t files = 0;
+      for (const auto& e : fs::recursive_directory_iterator(out)) files += e.is_regular_file();
+      CHECK(files == j["files"].size() + 1);
+    }
+    CHECK(resumed >= 1);
+  }
+
+  TEST_CASE("SIGTERM writes a checkpoint; resume on another device gives the same digests; refusals") {
+    const std::string root = awtest::temp_dir("term");
+    const std::string scene = root + "/scene.toml";
+    std::ofstream(scene) << kScene;
+    const std::string out = root + "/out";
+    REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", root + "/plain"}) == 0);
+    awtest::StartedCli cli = awtest::start_cli({"run", scene, "--device", "cpu", "--out", out});
+    REQUIRE(cli.wait_for("progress:", 60));
+    ::kill(cli.pid, SIGTERM);
+    CHECK(cli.finish() == 143);
+    CAPTURE(cli.output);
+    CHECK(contains(cli.output, "checkpoint written to"));
+    CHECK_FALSE(fs::exists(out));
+    const auto found = checkpoints_beside(out);
+    REQUIRE(found.size() == 1);
+
+    // a later plain run does not start beside it, and staging clean-up keeps it
+    std::string text;
+    CHECK(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", out}, &text) == 3);
+    CHECK(contains(text, "a checkpoint of an interrupted run is waiting in"));
+    REQUIRE(checkpoints_beside(out).size() == 1);
+    // another scene's values are refused, and the checkpoint is kept
+    CHECK(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", out, "--resume", "--set",
+                           "ensemble.seed=9"},
+                          &text) == 2);
+    CHECK(contains(text, "another scene"));
+    REQUIRE(checkpoints_beside(out).size() == 1);
+    // a damaged checkpoint is refused and left as it is
+    const std::string file = arnoldweb::find_checkpoints(out).front().file;
+    std::string bytes;
+    {
+      std::ifstream in(file, std::ios::binary);
+      bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    std::string bad = bytes;
+    bad[bad.size() / 3] ^= 0x40;
+    std::ofstream(file, std::ios::binary) << bad;
+    CHECK(awtest::run_cli({"resume", out, "--quiet"}, &text) == 2);
+    CHECK(contains(text, "damaged"));
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+
+    // resumed on another device where there is one (PoCL), else on the cpu backend
+    std::string device = "cpu";
+    for (const auto& d : arnoldweb::list_devices())
+      if (d.backend == "opencl") device = d.id;
+    CAPTURE(device);
+    CHECK(awtest::run_cli({"resume", out, "--quiet", "--device", device}, &text) == 0);
+    CAPTURE(text);
+    check_same_digests(root + "/plain", out);
+    CHECK(checkpoints_beside(out).empty());
+    // the directory is an ordinary arnoldweb output: --force may replace it
+    CHECK(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", out, "--force", "--set",
+                           "run.checkpoint_every=\"off\""}) == 0);
+  }
+}
