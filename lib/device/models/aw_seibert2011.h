@@ -62,6 +62,9 @@ AW_FN lreal aw_model_kinetic(lreal px, lreal py, lreal pz, AW_CONSTANT aw_rparam
   return AW_R(0.5) * AW_FMA(pz, pz, AW_FMA(py, py, px * px));
 }
 
+/* The diagonal of d^2T/dP^2 (constant for every supported kinetic form): the tangent drift is du_i += d a_i dp_i. */
+AW_FN void aw_model_kinetic_diag(AW_CONSTANT aw_rparams* rp, real* a) { a[0] = AW_R(1.0); a[1] = AW_R(1.0); a[2] = AW_R(1.0); }
+
 AW_FN void aw_model_drift(aw_lstate* s, real d, AW_CONSTANT aw_rparams* rp) {
   lreal dd = AW_LSPLAT(d);
   s->ux = AW_FMA(dd, s->px, s->ux);

@@ -1,6 +1,8 @@
 // arnoldweb: the step-size guard (plan.hpp). Splitting methods resonate when
-// h k |p| reaches pi (k: the largest wave number of the force, 2 for z in the
-// paper's model); the guard refuses such steps and advises one at pi/2.
+// h omega reaches pi, omega the largest frequency of the model along a
+// trajectory (the paper's model: k |p|max, k = 2 the largest wave number of
+// the force, for z; other models: plan.cpp's model_frequency); the guard
+// refuses such steps and advises one at pi/2.
 #include <algorithm>
 #include <cmath>
 
@@ -10,13 +12,21 @@
 namespace arnoldweb {
 
 StepGuard step_guard(double energy, double step, double average, double energy_every) {
+  const double p_max = std::sqrt(2.0 * (energy + 2.0));
+  StepGuard g = step_guard_at(2.0 * p_max, step, average, energy_every);
+  g.p_max = p_max;
+  return g;
+}
+
+StepGuard step_guard_at(double omega, double step, double average, double energy_every) {
   constexpr double kTwoPi = 6.283185307179586476925;
   StepGuard g;
-  g.p_max = std::sqrt(2.0 * (energy + 2.0));
-  g.value = step * kTwoPi * 2.0 * g.p_max;
+  g.omega = omega;
+  g.p_max = omega / 2.0;
+  g.value = step * kTwoPi * omega;
   g.limit = M_PI;
   g.advised = M_PI / 2;
-  const double s_max = g.advised / (kTwoPi * 2.0 * g.p_max);
+  const double s_max = g.advised / (kTwoPi * omega);
   const double unit = (energy_every > 0 && energy_every <= average) ? energy_every : average;
   // prefer a round number (1, 2, 2.5, 4, 5 x 10^k) that divides the schedule
   for (double decade = std::pow(10.0, std::floor(std::log10(s_max))); decade > 1e-9 * s_max; decade /= 10)
