@@ -1,20 +1,38 @@
 // arnoldweb: the reduction of a run: what every chunk produced, folded into
-// one result. Counters are 64-bit sums, the energy statistics a maximum and
-// a sum taken in chunk and group order, state records kept in trajectory
-// order, the histograms (folded on the device) split into the map, its frames
-// and the zoom. One place for all of it, used by the runner (and by several
-// processes later: a reduction can be merged with another's).
+// one result. It is exact and mergeable, so the result does not depend on how
+// the index range was cut into chunks, in which order they were folded, or how
+// many reductions (processes, resumed runs) they were spread over:
+//  - counters and histograms are 64-bit integer sums;
+//  - the energy statistics are a maximum and an exact sum (exact_sum.hpp) of
+//    the devices' group sums (a device's groups are aligned to absolute
+//    trajectory indices when chunks start at multiples of kChunkGranule);
+//  - state records are kept by chunk and read out in trajectory order;
+//  - the trajectories done are a set of index ranges.
+// A reduction has a byte image (checkpoints, messages between processes).
 #pragma once
 
 #include <cstdint>
 #include <map>
+#include <string>
 #include <vector>
 
 #include "arnoldweb/device.hpp"
 #include "arnoldweb/plan.hpp"
 #include "arnoldweb/result.hpp"
+#include "run/exact_sum.hpp"
 
 namespace arnoldweb::detail {
+
+// Chunks start at multiples of this many trajectories (unless the scene sets
+// ensemble.chunk): a multiple of every device's group span (cpu 256, OpenCL
+// 8 lanes x 16 or 128 items, CUDA 128), so each group's energy sum covers the
+// same trajectories however the range is chunked.
+constexpr std::uint64_t kChunkGranule = 1024;
+
+struct IndexRange {
+  std::uint64_t first = 0, count = 0;
+  std::uint64_t end() const { return first + count; }
+};
 
 class Reduction {
  public:
@@ -22,24 +40,42 @@ class Reduction {
 
   // The outputs of the chunk of trajectories [first, first + count).
   void add(std::uint64_t first, std::uint64_t count, const ChunkOutput& out);
-  // The device's histograms: plan.frames maps of plan.npix pixels, then the zoom.
-  void set_histograms(const std::vector<std::uint64_t>& histograms);
+  // Adds a device's histograms (plan.frames maps of plan.npix pixels, then
+  // the zoom), accumulated over the chunks it ran.
+  void add_histograms(const std::vector<std::uint64_t>& histograms);
+  // Folds another reduction of the same plan in (disjoint chunks).
+  void merge(const Reduction& other);
 
   std::uint64_t completed() const { return completed_; }
+  bool complete() const { return completed_ == plan_->scene.trajectories; }
+  // The ranges of [0, N) not done yet, in order.
+  std::vector<IndexRange> pending() const;
+  // Wall seconds of computing recorded so far (resumed runs add theirs).
+  double seconds = 0;
+  std::vector<std::uint64_t> chunks;  // sizes of the launches, in the order they were added
 
   // The result (counts, statistics, maps, states); device, timing and chunk
   // sizes are the runner's to fill in.
   Result result() const;
 
+  // Byte image of everything above; read() checks it against the plan and
+  // throws std::runtime_error naming what does not fit.
+  std::string image() const;
+  static Reduction read(const Plan& plan, const std::string& image);
+
  private:
-  const Plan& plan_;
+  void mark_done(std::uint64_t first, std::uint64_t count);
+  const Plan* plan_;
   std::uint64_t completed_ = 0;
+  std::map<std::uint64_t, std::uint64_t> done_;  // first -> end, disjoint, not adjacent
   std::vector<std::uint64_t> counters_;  // AW_C_COUNT
-  double emax_ = 0, esum_ = 0;
-  std::vector<std::uint64_t> histograms_;
+  double emax_ = 0;
+  ExactSum esum_;
+  std::vector<std::uint64_t> histograms_;  // plan.hist_size, or empty while none were added
   struct States {
     std::vector<double> initial_r, final_r;
     std::vector<std::int64_t> final_i;
+    std::vector<double> indicators;
   };
   std::map<std::uint64_t, States> states_;  // by first trajectory of the chunk
 };

@@ -70,6 +70,13 @@ std::string digest_initial_states(const Result& r) {
   return d.hex();
 }
 
+std::string digest_indicators(const Result& r) {
+  if (r.indicators.empty()) return "";
+  Digest d;
+  d.add(r.indicators);
+  return d.hex();
+}
+
 std::string digest_final_states(const Result& r) {
   if (r.final_r.empty()) return "";
   Digest d;

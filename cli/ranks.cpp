@@ -1,0 +1,92 @@
+// arnoldweb CLI under mpirun/srun (docs/cluster.md): which device each rank
+// drives, the scene rank 0 hands to the others, and the other ranks' side of
+// `run` and `resume`.
+#include "ranks.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "arnoldweb/accuracy.hpp"
+#include "arnoldweb/cluster.hpp"
+#include "arnoldweb/errors.hpp"
+#include "stop_signals.hpp"
+
+namespace arnoldweb::cli {
+namespace {
+
+Cluster* g_cluster = nullptr;
+
+std::vector<std::string> split_list(const std::string& s) {
+  std::vector<std::string> parts;
+  std::size_t at = 0;
+  for (;;) {
+    const std::size_t comma = s.find(',', at);
+    parts.push_back(s.substr(at, comma == std::string::npos ? std::string::npos : comma - at));
+    if (comma == std::string::npos) return parts;
+    at = comma + 1;
+  }
+}
+
+}  // namespace
+
+void set_cluster(Cluster* cluster) { g_cluster = cluster; }
+Cluster* cluster() { return g_cluster; }
+
+void refuse_mpirun_without_mpi() {
+  if (!g_cluster && launcher_size() > 1)
+    throw OutputRefused("", "this arnoldweb was built without MPI, and mpirun (or srun) started " +
+                                std::to_string(launcher_size()) +
+                                " copies of it: each would run the whole scene. mpirun needs the MPI build "
+                                "(install libopenmpi-dev and build again: cmake finds it), or run one process");
+}
+
+std::optional<std::string> explicit_rank_device(const std::optional<std::string>& device) {
+  if (!device || device->find(',') == std::string::npos) return std::nullopt;
+  const auto list = split_list(*device);
+  const int rank = g_cluster ? g_cluster->rank() : 0;
+  return list[static_cast<std::size_t>(rank) % list.size()];
+}
+
+std::string rank_device(const std::optional<std::string>& device_option, const std::string& scene_device) {
+  if (auto pick = explicit_rank_device(device_option)) return *pick;
+  const std::string spec = device_option ? *device_option : scene_device;
+  if (!g_cluster || g_cluster->size() <= 1) return spec;
+  // the node-local rank picks the node's device of that index, of the kind asked for
+  const std::string id = spec == "auto" ? default_device_id() : spec;
+  const std::string kind = id.substr(0, id.find(':'));
+  if (kind == "cpu") return "cpu";
+  std::vector<std::string> same;
+  for (const DeviceInfo& d : list_devices())
+    if (d.backend == kind) same.push_back(d.id);
+  if (same.empty()) return id;
+  return same[static_cast<std::size_t>(g_cluster->local_rank()) % same.size()];
+}
+
+void share_scene(const Scene& scene) {
+  if (!g_cluster) return;
+  const nlohmann::json j = {{"file", scene.file},
+                            {"text", scene.text},
+                            {"overrides", scene.overrides},
+                            {"labels", scene.override_labels}};
+  g_cluster->broadcast(j.dump());
+}
+
+int serve_rank(const std::optional<std::string>& device_option) {
+  Cluster& c = *g_cluster;
+  const nlohmann::json j = nlohmann::json::parse(c.broadcast(""));
+  const Scene scene = parse_scene(j["text"].get<std::string>(), j["file"].get<std::string>(),
+                                  j["overrides"].get<std::vector<std::string>>(),
+                                  j["labels"].get<std::vector<std::string>>());
+  std::unique_ptr<Backend> pilot;
+  const Job job = plan_job(scene, [&pilot](const Scene& s) {
+    if (!pilot) pilot = open_backend("cpu");
+    return resolve_step(s, *pilot);
+  });
+  auto backend = open_backend(rank_device(device_option, scene.device));
+  StopSignals signals;
+  RunOptions options;
+  options.stop = &signals.flag();
+  c.serve(job, *backend, options);
+  return 0;
+}
+
+}  // namespace arnoldweb::cli

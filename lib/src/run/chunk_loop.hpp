@@ -1,0 +1,64 @@
+// arnoldweb: the loop that keeps one device busy. It asks a work queue for
+// the next range of trajectories, runs it, hands the outputs back with the
+// next request, and sizes its requests to about RunOptions::chunk_seconds per
+// launch (never below one wave of the device, always a multiple of the chunk
+// granule). The queue decides what is left, folds the outputs and says when
+// to stop: one process (LocalQueue) or a rank of an MPI job (run/mpi/) use
+// the same loop.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "arnoldweb/device.hpp"
+#include "arnoldweb/run.hpp"
+#include "run/reduction.hpp"
+
+namespace arnoldweb::detail {
+
+class WorkQueue {
+ public:
+  virtual ~WorkQueue() = default;
+  // Takes the outputs of `finished` (count 0 the first time) and returns the
+  // next range for a device that wants about `want` trajectories (count 0:
+  // nothing more for this device). `backend` holds the histograms of every
+  // range it ran, for a queue that saves a checkpoint now.
+  virtual IndexRange next(const IndexRange& finished, const ChunkOutput& out, std::uint64_t want,
+                          Backend& backend) = 0;
+};
+
+// Chunks start at multiples of this (ensemble.chunk if set, else kChunkGranule;
+// never above the largest chunk the device takes).
+std::uint64_t chunk_granule(const Plan& plan, std::uint64_t max_chunk);
+
+// The first range of `pending` (which it shortens), at most `want` long and
+// ending at a multiple of `granule` unless it ends a pending range.
+IndexRange take_range(std::vector<IndexRange>& pending, std::uint64_t want, std::uint64_t granule);
+
+// Prepares `backend` for the plan and runs ranges from `queue` until it gives none.
+void drive_device(const Plan& plan, Backend& backend, WorkQueue& queue, const RunOptions& options);
+
+// The queue of one process: the pending ranges of a reduction, in order. It
+// folds every output into the reduction, reports progress, calls `after`
+// after each chunk (checkpoints) and stops at a stop request.
+class LocalQueue final : public WorkQueue {
+ public:
+  using After = std::function<void(Backend&, bool stopping)>;
+  LocalQueue(const Plan& plan, Reduction& reduction, const RunOptions& options, After after = {});
+  IndexRange next(const IndexRange& finished, const ChunkOutput& out, std::uint64_t want, Backend& backend) override;
+  bool stopped() const { return stopped_; }
+  double seconds() const;  // since the queue was made
+
+ private:
+  const Plan& plan_;
+  Reduction& reduction_;
+  const RunOptions& options_;
+  After after_;
+  std::vector<IndexRange> pending_;
+  std::uint64_t granule_;
+  bool stopped_ = false;
+  double start_;
+};
+
+}  // namespace arnoldweb::detail

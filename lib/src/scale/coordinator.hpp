@@ -1,0 +1,21 @@
+// arnoldweb: the coordinator of a job spread over several devices (MPI ranks,
+// or threads): it hands out ranges of trajectories to whichever worker asks
+// (dynamic: a slower device takes fewer), folds every chunk's outputs into
+// the part's exact reduction (run/reduction.hpp) and the workers' histograms
+// at the end, reports progress as totals, and saves checkpoints: a periodic
+// one parks every worker between chunks, collects their histograms and saves
+// (run/job_checkpoints.hpp); a stop request ends every worker after its chunk
+// and saves. The result is the same bits for any number of workers and any
+// assignment of chunks.
+#pragma once
+
+#include "arnoldweb/job.hpp"
+#include "scale/transport.hpp"
+
+namespace arnoldweb::detail {
+
+// `device`, `kernel`: what the result names (the coordinator's own device).
+JobResult coordinate_job(const Job& job, Transport& transport, const RunOptions& options, JobObserver* observer,
+                         const DeviceInfo& device, const std::string& kernel);
+
+}  // namespace arnoldweb::detail
