@@ -1,0 +1,66 @@
+"""arnoldweb: maps the Arnold web with ensembles of symplectic trajectories.
+
+The Python interface to the arnoldweb C++ library (the same library as the
+``arnoldweb`` command): scenes are read and validated by the library, runs
+compute on its devices (cpu, OpenCL, CUDA) and return numpy arrays.
+
+    import arnoldweb as aw
+    scene = aw.Scene.from_file("scenes/default.toml").set("ensemble.trajectories", 20000)
+    result = aw.run(scene, progress=True)
+    result.map          # HEALPix RING counts, nside = result.nside
+    result.write("out/py")
+
+See docs/python.md.
+"""
+from __future__ import annotations
+
+from . import _arnoldweb as _core
+from ._errors import BuildError, DeviceError, Error, OutputError, OutputRefused, SceneError
+from ._result import COUNTER_NAMES, INDICATOR_NAMES, Result
+from ._run import accuracy, run
+from ._scene import Scene
+
+__version__: str = _core.__version__
+
+__all__ = ["Scene", "Result", "run", "accuracy", "devices", "methods", "scene_keys", "backend_problems",
+           "default_device", "pixel_directions", "resonances", "Error", "SceneError", "DeviceError", "BuildError", "OutputError",
+           "OutputRefused", "COUNTER_NAMES", "INDICATOR_NAMES", "__version__"]
+
+
+def devices() -> list:
+    """The devices present, cpu first, as dicts: id ("cpu", "opencl:0", "cuda:0"), backend,
+    name, vendor, version, fp64, compute_units, memory, max_allocation, is_cpu."""
+    return _core.devices()
+
+
+def methods() -> list:
+    """The integration methods (integrator.method), as dicts: name, title, source, order,
+    eps_orders, stages, kick_first, family, stability, drift and kick coefficients."""
+    return _core.methods()
+
+
+def scene_keys() -> list:
+    """Every scene key, as dicts: key, type, allowed, default, meaning (docs/scenes.md)."""
+    return _core.scene_keys()
+
+
+def backend_problems() -> list:
+    """Why a backend contributes no device here, one line each (e.g. no CUDA driver)."""
+    return _core.backend_problems()
+
+
+def pixel_directions(nside: int):
+    """Unit vectors to the HEALPix RING pixel centres, a float64 array of shape (12 nside², 3):
+    row i is the direction that ``result.map[i]`` counts (the library's own pix2vec)."""
+    return _core.pixel_directions(nside)
+
+
+def resonances(max_order: int) -> list:
+    """The resonances m·P = 0 with max |m_i| <= max_order, lowest order first, as dicts
+    (m, order, label): each is the great circle of directions P with m·P = 0."""
+    return _core.resonances(max_order)
+
+
+def default_device() -> str:
+    """The device id that run.device = "auto" resolves to on this machine."""
+    return _core.default_device()

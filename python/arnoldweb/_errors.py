@@ -1,0 +1,75 @@
+"""The errors arnoldweb raises: the C++ library's error types, with their fields.
+
+Every message is the library's, word for word: the CLI prints the same text.
+"""
+from __future__ import annotations
+
+__all__ = ["Error", "SceneError", "DeviceError", "BuildError", "OutputError", "OutputRefused"]
+
+
+class Error(RuntimeError):
+    """Base of every error the arnoldweb library reports.
+
+    ``result`` holds what was computed when the error came after a run (e.g. the
+    outputs could not be written), else None.
+    """
+
+    result = None
+
+
+class SceneError(Error, ValueError):
+    """A scene that cannot be run as written: unreadable file, TOML syntax,
+    unknown key, wrong type, value out of range, values wrong together.
+
+    Attributes: ``file`` (the scene's file or name), ``line`` and ``column``
+    (1-based; 0 when the value did not come from the text, e.g. a default or an
+    override), ``key`` (the dotted key, e.g. "model.energy"; "" if none),
+    ``reason`` (the message without the position).
+    """
+
+    def __init__(self, message: str, file: str = "", line: int = 0, column: int = 0, key: str = "",
+                 reason: str = ""):
+        super().__init__(message)
+        self.file = file
+        self.line = line
+        self.column = column
+        self.key = key
+        self.reason = reason or message
+
+
+class DeviceError(Error):
+    """A device that is missing or failed: ``device`` (its id), ``call`` (the API
+    function), ``status`` (its return code)."""
+
+    def __init__(self, message: str, device: str = "", call: str = "", status: int = 0):
+        super().__init__(message)
+        self.device = device
+        self.call = call
+        self.status = status
+
+
+class BuildError(Error):
+    """A kernel that failed to compile: ``options`` and the full ``log``."""
+
+    def __init__(self, message: str, options: str = "", log: str = ""):
+        super().__init__(message)
+        self.options = options
+        self.log = log
+
+
+class OutputError(Error, OSError):
+    """An output that cannot be written (exists without force, no permission,
+    disk full): ``path`` names it."""
+
+    def __init__(self, message: str, path: str = ""):
+        Error.__init__(self, message)
+        self.path = path
+
+    def __str__(self) -> str:
+        return str(self.args[0]) if self.args else ""
+
+
+class OutputRefused(OutputError):
+    """An output place arnoldweb refuses whatever the options: it would replace
+    something arnoldweb did not write (the current directory, a directory holding
+    the scene or other files)."""

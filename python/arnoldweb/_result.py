@@ -1,0 +1,225 @@
+"""What a run produced, as numpy arrays (views of the library's memory where it owns it)."""
+from __future__ import annotations
+
+import json
+import os
+from typing import Any, Dict, List, Optional
+
+import numpy as np
+
+__all__ = ["Result", "COUNTER_NAMES", "INDICATOR_NAMES"]
+
+#: The fields of Result.counters, in order.
+COUNTER_NAMES = ("trajectories", "completed", "binned", "flagged_nonfinite", "flagged_energy",
+                 "flagged_initial", "left_region")
+_COUNTER_DTYPE = np.dtype([(n, np.uint64) for n in COUNTER_NAMES])
+#: The fields of Result.indicators, in the library's record order (AW_IND_* slots).
+INDICATOR_NAMES = ("fli", "megno", "megno_lyapunov", "lyapunov")
+_INDICATOR_DTYPE = np.dtype([(n, np.float64) for n in INDICATOR_NAMES])
+
+
+class Result:
+    """One run of a scene (the main run; its panels are in :attr:`panels`).
+
+    Arrays are read-only numpy views of the library's own memory where it holds
+    them contiguously (map, zoom, states): no copy is made, and each keeps the
+    run alive.
+    """
+
+    def __init__(self, record: Any, part: int = 0):
+        self._record = record
+        self._part = part
+        self._cache: Dict[str, Any] = {}
+
+    def _cached(self, name: str, make):
+        if name not in self._cache:
+            self._cache[name] = make()
+        return self._cache[name]
+
+    # ------------------------------------------------------------------ maps
+    @property
+    def map(self) -> Optional[np.ndarray]:
+        """The velocity map: counts of binned windows per HEALPix pixel in RING order,
+        shape (12 nside²,), dtype uint64 (None without observe.velocity_map).
+        ``healpy.mollview(result.map)`` draws it."""
+        return self._cached("map", lambda: self._record.map(self._part))
+
+    @property
+    def nside(self) -> int:
+        """HEALPix nside of :attr:`map` (0 without a map)."""
+        return self._record.nside(self._part)
+
+    @property
+    def ordering(self) -> str:
+        """HEALPix pixel ordering of the maps: always "RING"."""
+        return "RING"
+
+    @property
+    def frames(self) -> Optional[np.ndarray]:
+        """One map per observe.frames span, shape (frames, 12 nside²), uint64 (a copy); None without frames."""
+        return self._cached("frames", lambda: self._record.frames(self._part))
+
+    @property
+    def zoom(self) -> Optional[np.ndarray]:
+        """The observe.zoom histogram, shape (R, R) (row y, column x), uint64; None without a zoom."""
+        return self._cached("zoom", lambda: self._record.zoom(self._part))
+
+    # ---------------------------------------------------------------- states
+    @property
+    def states(self) -> Optional[dict]:
+        """State records of the completed trajectories in index order, when the scene asked for
+        them (observe.initial_states / final_states), as in states.h5:
+        ``{"initial": {"position_turns", "momentum"}, "final": {"position_turns", "winding",
+        "momentum", "status", "position"}}``; arrays of shape (n, 3) (status: (n,)); float64
+        and int64. Positions are in turns (x / 2π, wrapped to [-1/2, 1/2]); ``position`` is the
+        unwrapped 2π (winding + position_turns). None when no states were asked for."""
+        return self._cached("states", self._make_states)
+
+    def _make_states(self) -> Optional[dict]:
+        out = {}
+        init = self._record.initial_states(self._part)
+        if init is not None:
+            out["initial"] = {"position_turns": init[:, 0:3], "momentum": init[:, 3:6]}
+        fin = self._record.final_states(self._part)
+        if fin is not None:
+            ints = self._record.final_ints(self._part)
+            out["final"] = {
+                "position_turns": fin[:, 0:3],
+                "winding": ints[:, 0:3],
+                "momentum": fin[:, 3:6],
+                "status": ints[:, 3],
+                "position": 2 * np.pi * (ints[:, 0:3].astype(np.float64) + fin[:, 0:3]),
+            }
+        return out or None
+
+    # --------------------------------------------------------------- numbers
+    @property
+    def counters(self) -> np.ndarray:
+        """The run's counts as a numpy record (dtype fields COUNTER_NAMES, uint64):
+        ``result.counters["binned"]``."""
+        def make():
+            c = self._record.counts(self._part)
+            return np.array(tuple(c[n] for n in COUNTER_NAMES), dtype=_COUNTER_DTYPE)
+        return self._cached("counters", make)
+
+    @property
+    def indicators(self) -> Optional[np.ndarray]:
+        """Chaos indicators of the completed trajectories (observe.fli, observe.megno,
+        observe.lyapunov; docs/indicators.md), or None when the scene asked for none: a
+        zero-copy numpy record array with the fields of INDICATOR_NAMES (float64; NaN where not
+        asked or flagged), e.g. ``result.indicators["fli"]``. For ``ensemble.initial = "grid"``
+        it has the grid's shape, as in indicators.h5: (12 nside²,) in HEALPix RING order
+        (``healpy.mollview(result.indicators["fli"])``), or (n2, n1) for lonlat and plane grids."""
+        return self._cached("indicators", self._make_indicators)
+
+    def _make_indicators(self) -> Optional[np.ndarray]:
+        records = self._record.indicators(self._part)
+        if records is None:
+            return None
+        layout = self._record.indicator_layout(self._part)
+        table = records.view(_INDICATOR_DTYPE).reshape(records.shape[0])
+        return table.reshape(layout["shape"]) if int(np.prod(layout["shape"])) == table.size else table
+
+    @property
+    def energy(self) -> dict:
+        """Energy error statistics: tracked, max, mean, median_upper_bound, p99_upper_bound and
+        log_hist (the quarter-octave histogram of max|dE| over all trajectories)."""
+        return self._cached("energy", lambda: self._record.energy(self._part))
+
+    @property
+    def trajectories(self) -> int:
+        """Trajectories asked for."""
+        return int(self.counters["trajectories"])
+
+    @property
+    def completed(self) -> int:
+        """Trajectories integrated (fewer than asked when the run was interrupted)."""
+        return int(self.counters["completed"])
+
+    @property
+    def binned(self) -> int:
+        """Trajectories that contributed every window to the map (map.sum() / windows)."""
+        return int(self.counters["binned"])
+
+    @property
+    def interrupted(self) -> bool:
+        """True when a stop (Ctrl-C, an exception in the progress callback) ended the run early."""
+        return self._record.interrupted_part(self._part)
+
+    @property
+    def digests(self) -> dict:
+        """XXH3-128 digests of the map and the states (as in summary.json): identical bits give
+        identical digests on every device."""
+        return self._record.digests(self._part)
+
+    @property
+    def device(self) -> dict:
+        """The device it ran on: id, backend, name, vendor, version."""
+        return self._record.device(self._part)
+
+    @property
+    def wall_seconds(self) -> float:
+        """Wall time of the run."""
+        return self._record.wall_seconds(self._part)
+
+    @property
+    def rate(self) -> float:
+        """Trajectory-steps per second."""
+        return self._record.rate(self._part)
+
+    @property
+    def summary(self) -> dict:
+        """The run's summary.json as a dict: the library's own summary (same function as the
+        CLI's). Once :meth:`write` (or run(out=...)) has written the outputs, it is the
+        summary.json written there, file list included; before, its ``files`` list is empty."""
+        written = self._record.written_dir
+        if written:
+            path = os.path.join(written, self.subdir, "summary.json")
+            with open(path, encoding="utf-8") as f:
+                return json.load(f)
+        return self._cached("summary", lambda: json.loads(self._record.summary_json(self._part)))
+
+    # ---------------------------------------------------------------- panels
+    @property
+    def name(self) -> str:
+        """"" for the main run, else the panel's name."""
+        return self._record.name(self._part)
+
+    @property
+    def title(self) -> str:
+        """The panel's caption ("" for the main run)."""
+        return self._record.title(self._part)
+
+    @property
+    def subdir(self) -> str:
+        """Where this part's files go in the output directory ("" or "panel-<name>")."""
+        return "" if self._part == 0 else f"panel-{self.name}"
+
+    @property
+    def panels(self) -> Dict[str, "Result"]:
+        """The results of the scene's [[panel]] runs, by name (those that ran)."""
+        if self._part != 0:
+            return {}
+        return {self._record.name(k): Result(self._record, k) for k in range(1, self._record.parts_run)}
+
+    @property
+    def files(self) -> List[str]:
+        """The paths the last write wrote ([] before)."""
+        return list(self._record.files)
+
+    # ---------------------------------------------------------------- output
+    def write(self, out: "str | os.PathLike[str]", force: bool = False) -> List[str]:
+        """Writes the output directory ``out`` exactly as ``arnoldweb run --out out`` does
+        (summary.json, map.h5, states.h5, pictures, panel-<name>/, figure.png), through the
+        library's output code: files are made in a staging directory and moved into place; an
+        existing directory is refused (OutputError) unless ``force`` and arnoldweb wrote it, and
+        refused always (OutputRefused) if it is not arnoldweb's. Returns the paths written."""
+        if self._part != 0:
+            raise ValueError("write() writes the whole job: call it on the main result")
+        return self._record.write(os.fspath(out), force, self._record.scene_file())
+
+    def __repr__(self) -> str:
+        what = f"panel {self.name!r}" if self._part else "run"
+        stop = ", interrupted" if self.interrupted else ""
+        return (f"<arnoldweb.Result {what}: {self.completed}/{self.trajectories} trajectories, "
+                f"{self.binned} binned, nside {self.nside}{stop}>")

@@ -1,0 +1,97 @@
+"""Running scenes and the accuracy pilot."""
+from __future__ import annotations
+
+import os
+from typing import Callable, Optional, Sequence, Union
+
+from . import _arnoldweb as _core
+from ._progress import make_progress
+from ._result import Result
+from ._scene import Scene
+
+__all__ = ["run", "accuracy"]
+
+SceneLike = Union[Scene, str, "os.PathLike[str]"]
+
+
+def _scene_of(scene: SceneLike) -> Scene:
+    if isinstance(scene, Scene):
+        return scene.copy()
+    if isinstance(scene, (str, os.PathLike)):
+        return Scene.from_file(scene)
+    raise TypeError(f"scene must be an arnoldweb.Scene or a path, not {type(scene).__name__}")
+
+
+def run(scene: SceneLike, device: Optional[str] = None,
+        progress: "bool | Callable[[int, int, float], None] | None" = None,
+        out: "str | os.PathLike[str] | None" = None, force: bool = False) -> Result:
+    """Runs a scene (and its [[panel]] runs) and returns the main run's :class:`Result`.
+
+    - ``device``: "cpu", "opencl:N", "cuda:N" or "auto" (as ``--device``); None: run.device.
+    - ``progress``: True for a bar (tqdm when installed, else lines on stderr), or a
+      callable ``progress(done, total, seconds)`` called after every chunk; None: quiet.
+    - ``out``: an output directory to write as ``arnoldweb run --out`` does (checked before
+      anything is computed; ``force`` as ``--force``). None: nothing is written (see
+      :meth:`Result.write`).
+
+    The GIL is released while the device computes. Ctrl-C (SIGINT) stops the run after the
+    current chunk and raises KeyboardInterrupt whose ``result`` attribute holds what was
+    computed (and, with ``out``, was written); an exception raised by the progress callback
+    stops it the same way. Raises SceneError, DeviceError, BuildError, OutputError.
+    """
+    s = _scene_of(scene)
+    if device is not None:
+        s._apply(f"run.device={device}", f"device={device!r}")
+    if out is not None:
+        out = os.fspath(out)
+        if out == "":
+            from ._errors import OutputRefused
+            raise OutputRefused("out was given an empty directory name", path="")
+        s._apply(f"output.dir={_quote(out)}", f"out={out!r}")
+    callback, close = make_progress(progress)
+    try:
+        record = _core._run(s._scene, callback, out is not None, force)
+    finally:
+        close()
+    result = Result(record)
+    stop = record.take_stop_exception()
+    try:
+        record.raise_write_error()
+    except Exception as e:  # the outputs failed: keep the result on the error
+        e.result = result
+        raise e from stop
+    if stop is not None:
+        stop.result = result
+        raise stop
+    return result
+
+
+def _quote(text: str) -> str:
+    from ._toml import literal
+    return literal(text)
+
+
+def accuracy(scene: SceneLike, target: Optional[float] = None, device: Optional[str] = None,
+             safety: float = 4.0, pilot: int = 512, pilot_duration: float = 5.0,
+             methods: Optional[Sequence[str]] = None, prefilter: bool = True) -> dict:
+    """A pilot ensemble predicts the energy error and cost of the scene as written and finds
+    the cheapest method and step with max|dE| <= ``target`` (default integrator.tolerance), as
+    ``arnoldweb accuracy`` does (docs/accuracy.md). Returns the report as a dict: device,
+    pilot_*, fits (per method: points of step, max, median), as_written, best, per_method,
+    found, why_not. Computes only the pilot; writes nothing."""
+    s = _scene_of(scene)
+    if device is not None:
+        s._apply(f"run.device={device}", f"device={device!r}")
+    if target is not None and not (0 < target < 1):
+        raise ValueError(f"target must be greater than 0 and less than 1, got {target}")
+    if not 1 <= safety <= 1000:
+        raise ValueError(f"safety must be in [1, 1000], got {safety}")
+    if not 1 <= pilot <= 100_000_000:
+        raise ValueError(f"pilot must be in [1, 100000000] trajectories, got {pilot}")
+    if not pilot_duration > 0:
+        raise ValueError(f"pilot_duration must be positive, got {pilot_duration}")
+    names = [m["name"] for m in _core.methods()]
+    for m in methods or []:
+        if m not in names:
+            raise ValueError(f"unknown method {m!r}; known: {', '.join(names)}")
+    return _core._accuracy(s._scene, target or 0.0, safety, pilot, pilot_duration, list(methods or []), prefilter)

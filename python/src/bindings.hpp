@@ -1,0 +1,44 @@
+// arnoldweb Python module (_arnoldweb): what the binding files share. Each
+// file binds one concern of the library's public API (lib/include/arnoldweb);
+// the package python/arnoldweb builds the user-facing API on top.
+#pragma once
+
+#include <nanobind/nanobind.h>
+
+#include <exception>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "arnoldweb/arnoldweb.hpp"
+
+namespace awpy {
+namespace nb = nanobind;
+
+// json.loads(text): the library writes JSON (summary.json, the scene echo);
+// Python gets the same values as dicts.
+nb::object json_loads(const std::string& text);
+
+// The scene as run planned into a job, "auto" steps resolved on the cpu
+// backend like the CLI does (cli/scene_args.cpp). Releases the GIL.
+arnoldweb::Job plan_scene(const arnoldweb::Scene& scene);
+
+// A finished (or interrupted) run of a job: what Result objects view.
+struct RunRecord {
+  arnoldweb::Job job;
+  arnoldweb::JobResult result;
+  std::string written_dir;             // where write() last put the outputs ("": not written)
+  std::vector<std::string> files;      // the paths it wrote
+  nb::object stop_exception;           // what stopped the run early (KeyboardInterrupt, ...), or None
+  std::exception_ptr write_error;      // why writing the outputs failed, if it did
+};
+
+void bind_errors(nb::module_& m);
+void bind_catalogue(nb::module_& m);
+void bind_scene(nb::module_& m);
+void bind_result(nb::module_& m);
+void bind_run(nb::module_& m);
+void bind_accuracy(nb::module_& m);
+void bind_sphere(nb::module_& m);
+
+}  // namespace awpy

@@ -1,0 +1,92 @@
+// Running a scene: the library's job runner (run_job) with the GIL released
+// while devices compute. After every chunk the progress hook takes the GIL
+// briefly: it calls the user's callback and PyErr_CheckSignals(), so Ctrl-C
+// (or an exception from the callback) stops the run after the current chunk;
+// what stopped it is kept and raised by the package with the partial result
+// attached. With an output directory, it is checked before anything is
+// computed and written at the end (also after a stop), as `arnoldweb run` does.
+#include "bindings.hpp"
+
+#include <atomic>
+#include <nanobind/stl/shared_ptr.h>
+#include <nanobind/stl/string.h>
+
+namespace awpy {
+namespace {
+
+class PythonHook final : public arnoldweb::Progress, public arnoldweb::JobObserver {
+ public:
+  explicit PythonHook(nb::object callback) : callback_(std::move(callback)) {}
+
+  arnoldweb::Progress* begin_part(const arnoldweb::Job&, std::size_t) override { return this; }
+  void update(std::uint64_t done, std::uint64_t total, double seconds) override { report(done, total, seconds, true); }
+  void finish(std::uint64_t done, std::uint64_t total, double seconds) override { report(done, total, seconds, false); }
+
+  const std::atomic<bool>& stop() const { return stop_; }
+  nb::object exception() const { return exception_; }
+
+ private:
+  void report(std::uint64_t done, std::uint64_t total, double seconds, bool check_signals) {
+    nb::gil_scoped_acquire locked;
+    if (stop_.load()) return;  // already stopping: the first exception is the one raised
+    try {
+      if (!callback_.is_none()) callback_(done, total, seconds);
+      if (check_signals && PyErr_CheckSignals() != 0) throw nb::python_error();
+    } catch (nb::python_error& e) {
+      exception_ = nb::borrow(e.value());
+      stop_.store(true);
+    }
+  }
+
+  nb::object callback_;
+  std::atomic<bool> stop_{false};
+  nb::object exception_ = nb::none();
+};
+
+std::shared_ptr<RunRecord> run_scene(const arnoldweb::Scene& scene, nb::object progress, bool write, bool force) {
+  auto record = std::make_shared<RunRecord>();
+  record->stop_exception = nb::none();
+  record->job = plan_scene(scene);
+  const arnoldweb::Job& job = record->job;
+  arnoldweb::OutputOptions output;
+  PythonHook hook(std::move(progress));
+  {
+    nb::gil_scoped_release unlocked;
+    // everything is checked before any work: memory, then the output place
+    const arnoldweb::DeviceInfo device = arnoldweb::find_device(job.main().scene.device);
+    const std::uint64_t host = arnoldweb::available_memory();
+    for (const arnoldweb::JobPart& part : job.parts) arnoldweb::check_memory(part.plan, device, host);
+    if (write) {
+      output.force = force;
+      output.scene_file = scene.file;
+      output.expected_bytes = arnoldweb::estimate_output_bytes(job);
+      record->written_dir = arnoldweb::check_output_dir(job.main().scene.output_dir, output);
+    }
+    auto backend = arnoldweb::open_backend(job.main().scene.device);
+    arnoldweb::RunOptions options;
+    options.stop = &hook.stop();
+    record->result = arnoldweb::run_job(job, *backend, options, &hook);
+    if (write) {
+      // a failed write must not lose what was computed: the error is raised
+      // by the package with the result attached
+      try {
+        record->files = arnoldweb::write_job(job, record->result, output);
+      } catch (const arnoldweb::Error&) {
+        record->write_error = std::current_exception();
+        record->written_dir.clear();
+      }
+    }
+  }
+  record->stop_exception = hook.exception();
+  return record;
+}
+
+}  // namespace
+
+void bind_run(nb::module_& m) {
+  m.def("_run", &run_scene, nb::arg("scene"), nb::arg("progress").none(), nb::arg("write"), nb::arg("force"),
+        "Runs a scene and its panels; progress(done, total, seconds) after every chunk. With write, "
+        "the scene's output.dir is checked first and written at the end. Returns the run's record.");
+}
+
+}  // namespace awpy
