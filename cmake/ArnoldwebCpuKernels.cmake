@@ -6,6 +6,46 @@
 # a new model needs no change here.
 #
 #   arnoldweb_cpu_kernels(<out-var> <models-header> <output-dir>)
+#
+# Lanes (trajectories per vector): one vector register of the target ISA. Wider
+# vectors than the registers are split by GCC into halves with many scalar
+# moves and inserts: on a 2-core AVX2 EPYC (znver3) 8 double lanes made the
+# kernel ~4x the instructions of 4 lanes and the cpu backend 5x slower than
+# PoCL (docs/performance.md, "AVX2"); on AVX-512, 16 double lanes ran 6x slower
+# than 8. "auto" picks 8/16 (double/float) where the kernels' -march has
+# AVX-512F and 4/8 otherwise. The bits do not depend on the lanes.
+set(ARNOLDWEB_CPU_LANES_DOUBLE auto CACHE STRING "Trajectories per vector in the cpu backend's double kernels (auto: one register of the ISA)")
+set(ARNOLDWEB_CPU_LANES_FLOAT auto CACHE STRING "Trajectories per vector in the cpu backend's float kernels (auto: one register of the ISA)")
+if(ARNOLDWEB_CPU_LANES_DOUBLE STREQUAL "auto" OR ARNOLDWEB_CPU_LANES_FLOAT STREQUAL "auto")
+  include(CheckCXXSourceCompiles)
+  set(CMAKE_REQUIRED_QUIET ON)
+  if(ARNOLDWEB_CPU_ARCH)
+    set(CMAKE_REQUIRED_FLAGS "-march=${ARNOLDWEB_CPU_ARCH}")
+  endif()
+  check_cxx_source_compiles("#ifndef __AVX512F__\n#error no AVX-512F\n#endif\nint main() { return 0; }"
+                            ARNOLDWEB_CPU_HAS_AVX512)
+  unset(CMAKE_REQUIRED_FLAGS)
+  if(ARNOLDWEB_CPU_HAS_AVX512)
+    set(aw_auto_double 8)
+    set(aw_auto_float 16)
+  else()
+    set(aw_auto_double 4)
+    set(aw_auto_float 8)
+  endif()
+  if(ARNOLDWEB_CPU_LANES_DOUBLE STREQUAL "auto")
+    set(ARNOLDWEB_CPU_LANES_DOUBLE_USED ${aw_auto_double})
+  endif()
+  if(ARNOLDWEB_CPU_LANES_FLOAT STREQUAL "auto")
+    set(ARNOLDWEB_CPU_LANES_FLOAT_USED ${aw_auto_float})
+  endif()
+endif()
+if(NOT ARNOLDWEB_CPU_LANES_DOUBLE STREQUAL "auto")
+  set(ARNOLDWEB_CPU_LANES_DOUBLE_USED ${ARNOLDWEB_CPU_LANES_DOUBLE})
+endif()
+if(NOT ARNOLDWEB_CPU_LANES_FLOAT STREQUAL "auto")
+  set(ARNOLDWEB_CPU_LANES_FLOAT_USED ${ARNOLDWEB_CPU_LANES_FLOAT})
+endif()
+message(STATUS "arnoldweb: cpu backend lanes: ${ARNOLDWEB_CPU_LANES_DOUBLE_USED} double, ${ARNOLDWEB_CPU_LANES_FLOAT_USED} float")
 function(arnoldweb_cpu_kernels out_var models_header out_dir)
   file(STRINGS "${models_header}" model_lines REGEX "^#define AW_MODEL_[A-Z0-9_]+ [0-9]+")
   set(template "${PROJECT_SOURCE_DIR}/lib/src/backends/cpu/cpu_kernel_variant.cpp.in")
@@ -22,11 +62,11 @@ function(arnoldweb_cpu_kernels out_var models_header out_dir)
         set(VARIANT "${model}_${precision}_${math}")
         if(precision STREQUAL "float")
           set(PRECISION_DEFINE "#define AW_FLOAT 1")
-          set(LANES 16)
+          set(LANES ${ARNOLDWEB_CPU_LANES_FLOAT_USED})
           set(single true)
         else()
           set(PRECISION_DEFINE "")
-          set(LANES 8)
+          set(LANES ${ARNOLDWEB_CPU_LANES_DOUBLE_USED})
           set(single false)
         endif()
         if(math STREQUAL "native")
