@@ -46,8 +46,22 @@ struct PreparedJob {
 // where the device is not on this machine, `check` only warns (warning).
 PreparedJob prepare_job(const SceneArgs& args, bool force, std::string* device_warning = nullptr);
 
+// Runs a prepared job and writes its outputs (run and resume): checkpoints
+// per run.checkpoint_every, continuing from `resume` when given; returns the
+// exit code (128 + signal when stopped).
+// `device_option`: --device as given (a list gives each MPI rank its entry).
+int execute_job(const PreparedJob& prepared, bool quiet, const std::optional<FoundCheckpoint>& resume,
+                const std::optional<std::string>& device_option);
+// The checkpoint a resumed run of `out_dir` continues; CheckpointError if none.
+FoundCheckpoint checkpoint_to_resume(const std::string& out_dir);
+// prepare_job for a scene already read (resume reads it from a checkpoint).
+PreparedJob prepare_scene_job(const Scene& scene, const std::string& scene_file, bool force,
+                              std::string* device_warning = nullptr);
+
+void add_resume_command(CLI::App& app, Action& action);
 void add_devices_command(CLI::App& app, Action& action);
 void add_methods_command(CLI::App& app, Action& action);
+void add_models_command(CLI::App& app, Action& action);
 void add_check_command(CLI::App& app, Action& action);
 void add_run_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);

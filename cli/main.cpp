@@ -7,6 +7,7 @@
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/version.hpp"
 #include "command.hpp"
+#include "ranks.hpp"
 
 int main(int argc, char** argv) {
   using namespace arnoldweb::cli;
@@ -21,8 +22,10 @@ int main(int argc, char** argv) {
   Action action;
   add_devices_command(app, action);
   add_methods_command(app, action);
+  add_models_command(app, action);
   add_check_command(app, action);
   add_run_command(app, action);
+  add_resume_command(app, action);
   add_bench_command(app, action);
   add_keys_command(app, action);
   add_render_command(app, action);
@@ -42,6 +45,25 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  // under mpirun/srun with the MPI build: MPI_Init (ranks.hpp; docs/cluster.md)
+  std::unique_ptr<arnoldweb::Cluster> ranks;
+  try {
+    ranks = arnoldweb::start_cluster(&argc, &argv);
+  } catch (const arnoldweb::Error& e) {
+    std::cerr << "arnoldweb: error: " << e.what() << "\n";
+    return e.exit_code();
+  }
+  set_cluster(ranks.get());
+  // with several ranks an error on any rank ends them all (no rank waits forever)
+  auto fail = [&](int code, const std::string& text) {
+    std::cerr << "arnoldweb: " << text << "\n";
+    if (ranks) {
+      std::cerr.flush();
+      ranks->abort(code);
+    }
+    return code;
+  };
+  const std::string who = ranks ? "rank " + std::to_string(ranks->rank()) + " of " + std::to_string(ranks->size()) + ": " : "";
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -51,10 +73,8 @@ int main(int argc, char** argv) {
   try {
     return action ? action() : 2;
   } catch (const arnoldweb::Error& e) {
-    std::cerr << "arnoldweb: error: " << e.what() << "\n";
-    return e.exit_code();
+    return fail(e.exit_code(), who + "error: " + e.what());
   } catch (const std::exception& e) {
-    std::cerr << "arnoldweb: unexpected error: " << e.what() << "\n";
-    return 1;
+    return fail(1, who + "unexpected error: " + e.what());
   }
 }

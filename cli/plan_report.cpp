@@ -10,19 +10,32 @@ std::string short_number(double v) {
   return buf;
 }
 
+// As an ostream writes a double (%g).
+std::string general_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
 void print_plan(std::ostream& o, const Plan& p, const std::string& device) {
   const Scene& s = p.scene;
   o << "scene        " << s.file << "\n"
     << "device       " << device << "\n"
-    << "model        E = " << s.energy << "  (eps_eff = 2/E = " << short_number(2 / s.energy)
-    << ", accessible torus " << short_number(100 * p.accessible_fraction) << "%)\n"
+    << "model        "
+    << (s.model_kind == "seibert2011"
+            ? "E = " + general_number(s.energy) + "  (eps_eff = 2/E = " + short_number(2 / s.energy) +
+                  ", accessible torus " + short_number(100 * p.accessible_fraction) + "%)"
+            : s.model_kind + ", E = " + general_number(s.energy) + "  (energy surface reached from " +
+                  short_number(100 * p.accessible_fraction) + "% of positions and directions)")
+    << "\n"
     << "ensemble     " << s.trajectories << " trajectories, " << s.initial << ", seed " << s.seed << "\n"
     << "integrator   " << p.method.name << " (order " << p.method.order << ", " << p.method.stages
     << " force evaluations/step), h = " << p.step << " T, " << to_string(s.precision) << ", "
     << to_string(s.math) << " math\n"
     << "schedule     " << p.windows << " window(s) of " << s.average << " T = " << p.segments_per_window
     << " x " << p.steps_per_segment << " steps; " << p.steps_per_trajectory << " steps per trajectory\n"
-    << "step guard   h k |p|max = " << short_number(p.guard.value) << " (refused >= pi, advised <= pi/2)\n"
+    << "step guard   " << (s.model_kind == "seibert2011" ? "h k |p|max = " : "h omega_max = ")
+    << short_number(p.guard.value) << " (refused >= pi, advised <= pi/2; " << p.guard.basis << ")\n"
     << "effects      ";
   const auto eff = p.effects();
   for (std::size_t i = 0; i < eff.size(); ++i) o << (i ? ", " : "") << eff[i];

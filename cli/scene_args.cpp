@@ -27,16 +27,21 @@ Scene load_scene_args(const SceneArgs& a) {
 }
 
 PreparedJob prepare_job(const SceneArgs& args, bool force, std::string* device_warning) {
+  return prepare_scene_job(load_scene_args(args), args.scene, force, device_warning);
+}
+
+PreparedJob prepare_scene_job(const Scene& scene, const std::string& scene_file, bool force,
+                              std::string* device_warning) {
   PreparedJob p;
   // integrator.step = "auto": a pilot on the cpu backend (in portable math
   // the same bits as every device), opened only when a part asks for it
   std::unique_ptr<Backend> pilot;
-  p.job = plan_job(load_scene_args(args), [&pilot](const Scene& s) {
+  p.job = plan_job(scene, [&pilot](const Scene& s) {
     if (!pilot) pilot = open_backend("cpu");
     return resolve_step(s, *pilot);
   });
   p.output.force = force;
-  p.output.scene_file = args.scene;
+  p.output.scene_file = scene_file;
   p.output.expected_bytes = estimate_output_bytes(p.job);
   // memory: the device's and this process's, before anything is computed
   DeviceInfo device;

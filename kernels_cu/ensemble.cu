@@ -25,14 +25,14 @@
 #endif
 extern "C" __global__ void __launch_bounds__(AW_CUDA_MAX_BLOCK, AW_CUDA_MIN_BLOCKS)
     aw_ensemble(aw_u64 chunk_first, aw_u64 chunk_end, const aw_rparams* rp, const aw_iparams* ip, aw_u32* map,
-                aw_u32* counters, real* initial_r, real* final_r, aw_i64* final_i, real* group_stats) {
+                aw_u32* counters, real* initial_r, real* final_r, aw_i64* final_i, real* indicators, real* group_stats) {
   extern __shared__ unsigned char aw_shared[];
   real* scratch = (real*)aw_shared;
   const aw_config cfg = {AW_FEATURES, AW_STAGES, AW_KICK_FIRST, AW_INITIAL};
   aw_lanes l = {chunk_first + ((aw_u64)blockIdx.x * blockDim.x + threadIdx.x), chunk_end, chunk_first};
   real emax = 0, esum = 0;
   if (l.first < chunk_end) {
-    aw_outputs out = {map, counters, initial_r, final_r, final_i};
+    aw_outputs out = {map, counters, initial_r, final_r, final_i, indicators};
     aw_ensemble_item(cfg, l, rp, ip, out, &emax, &esum);
   }
   aw_group_reduce(scratch, (int)threadIdx.x, (int)blockDim.x, blockIdx.x, emax, esum, group_stats);

@@ -27,5 +27,13 @@ if command -v nvcc >/dev/null 2>&1; then
   cuda_args+=("-DCUDAToolkit_ROOT=$(dirname "$(dirname "$(command -v nvcc)")")")
 fi
 
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "${cuda_args[@]}" "$@"
+# ccache, when installed: the Python package's build (scripts/test-python.sh,
+# build-python/ at the same depth) then reuses these objects
+launcher_args=()
+if command -v ccache >/dev/null 2>&1; then
+  export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}" CCACHE_NOHASHDIR=1
+  launcher_args+=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "${cuda_args[@]}" "${launcher_args[@]}" "$@"
 cmake --build build -j"$(nproc)"

@@ -25,14 +25,14 @@ AW_FN void aw_ensemble_item(aw_config cfg, aw_lanes l, AW_CONSTANT aw_rparams* r
   aw_fx fx;
   lreal accepted = aw_initial_state(&s, cfg.initial, l.first, rp, ip);
   aw_fx_begin(cfg, &fx, &s, accepted, l, rp, ip, out);
-  aw_force(&s, rp);
+  aw_fx_first_force(cfg, &fx, &s, rp);
 
   for (aw_i64 w = 0; w < ip->windows; ++w) {
     lreal ux0 = s.ux, uy0 = s.uy, uz0 = s.uz;
     lint wx0 = s.wx, wy0 = s.wy, wz0 = s.wz;
     aw_fx_window_begin(cfg, &fx);
     for (aw_i64 g = 0; g < ip->segments; ++g) {
-      aw_segment(&s, ip->steps_per_segment, rp, cfg.stages, cfg.kick_first);
+      aw_fx_segment(cfg, &fx, &s, ip->steps_per_segment, rp);
       aw_fx_sample(cfg, &fx, &s, rp);
     }
     /* displacement over the window, in turns: exact integer part + wrapped part */
@@ -45,7 +45,7 @@ AW_FN void aw_ensemble_item(aw_config cfg, aw_lanes l, AW_CONSTANT aw_rparams* r
     aw_fx_window_end(cfg, &fx, w, dx, dy, dz, sane, l, rp, ip, out);
   }
   if (AW_HAS(AW_F_REVERSE)) aw_reverse(cfg, &s, rp, ip);
-  aw_fx_finish(cfg, &fx, &s, l, out, emax, esum);
+  aw_fx_finish(cfg, &fx, &s, l, out, emax, esum, rp);
 }
 
 #endif /* AW_ENSEMBLE_H */

@@ -2,7 +2,7 @@
  *
  * Implements the ring-scheme formulas of Gorski et al., ApJ 622 (2005) 759,
  * with the azimuth from the portable aw_atan2, so that every backend puts a
- * direction into the same pixel. tests/test_healpix.cpp compares it with
+ * direction into the same pixel. tests/device/test_math.cpp compares it with
  * Debian's HEALPix C++ library where that is installed.
  */
 #ifndef AW_HEALPIX_H

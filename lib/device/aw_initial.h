@@ -8,6 +8,7 @@
  *   shell:    direction uniform on the sphere, |P| = sqrt(2 (E - V(X)))
  *   cap:      direction uniform in a spherical cap, |P| as above
  *   box:      direction uniform in a longitude/latitude box, |P| as above
+ *   grid:     point i of a grid of initial conditions (aw_grid.h), no draws
  *   gaussian: p_x, p_y normal (Box-Muller), drawn once per trajectory; X is drawn
  *             until p_z^2 = 2 (E - V(X)) - p_x^2 - p_y^2 > 0, p_z with a random
  *             sign. So p_x, p_y are exactly Gaussian and X is uniform on the
@@ -21,6 +22,7 @@
 #ifndef AW_INITIAL_H
 #define AW_INITIAL_H
 
+#include "aw_grid.h"
 #include "aw_model.h"
 #include "aw_rng.h"
 
@@ -28,6 +30,7 @@
  * returns 1 in every lane that found a state, 0 elsewhere. */
 AW_FN lreal aw_initial_state(aw_lstate* s, int kind, aw_u64 first, AW_CONSTANT aw_rparams* rp,
                              AW_CONSTANT aw_iparams* ip) {
+  if (kind == AW_INITIAL_GRID) return aw_grid_state(s, first, rp, ip);
   const aw_u64 seed = (aw_u64)ip->seed;
   const int max_attempts = (int)ip->max_attempts;
   const real energy = rp->energy;

@@ -63,6 +63,12 @@ typedef struct {
   aw_region zoom;
   aw_region confine;
   real model[AW_MAX_MODEL_PARAMS]; /* the model's own (models/aw_models.h) */
+  /* chaos indicators and grids of initial conditions (docs/indicators.md) */
+  real tangent_w0[6];   /* initial tangent vector (dX in radians, dP), unit norm */
+  real tangent_step;    /* h in T: indicator times and exponents are in T */
+  real grid_position[3]; /* the fixed position of grid initial conditions, turns */
+  real grid_lo[2], grid_width[2]; /* plane: momentum ranges; lonlat: lon, lat ranges in turns */
+  real grid_fixed;      /* plane: the third momentum */
 } aw_rparams;
 
 /* --------------------------------------------------- integer parameters */
@@ -77,6 +83,10 @@ typedef struct {
   aw_i64 zoom_resolution;   /* zoom histogram: R x R bins */
   aw_i64 frames;            /* number of frames F (1 without AW_F_FRAMES) */
   aw_i64 frame_bounds[AW_MAX_FRAMES + 1]; /* frame k = windows [b_k, b_k+1) */
+  /* grids of initial conditions (AW_INITIAL_GRID, aw_grid.h) */
+  aw_i64 grid_kind;         /* AW_GRID_* */
+  aw_i64 grid_n[2];         /* healpix: nside, 0; lonlat: n_lon, n_lat; plane: n1, n2 */
+  aw_i64 grid_axes[3];      /* plane: the two gridded momenta, then the fixed one */
 } aw_iparams;
 
 #endif /* AW_PARAM_BLOCKS_H */

@@ -23,7 +23,13 @@
 #define AW_F_FRAMES 0x100u        /* one velocity map per span of windows (time series) */
 #define AW_F_REVERSE 0x200u       /* test of time reversibility: after the run, flip P,
                                      integrate as long again, flip P back (final states) */
-#define AW_F_ALL 0x3ffu
+/* chaos indicators (docs/indicators.md): the tangent vector through the
+ * derivative of the same step, and its observers, each only when asked */
+#define AW_F_TANGENT 0x400u       /* tangent dynamics (any indicator sets it) */
+#define AW_F_FLI 0x800u           /* fast Lyapunov indicator: max_t log |w| */
+#define AW_F_MEGNO 0x1000u        /* mean MEGNO <Y> and the Lyapunov exponent from its slope */
+#define AW_F_LYAPUNOV 0x2000u     /* finite-time maximal Lyapunov exponent log |w(t)| / t */
+#define AW_F_ALL 0x3fffu
 
 /* ------------------------------------------------ initial distributions
  * X is uniform on the accessible part of the torus in every case. */
@@ -31,11 +37,15 @@
 #define AW_INITIAL_CAP 1      /* direction uniform in a spherical cap */
 #define AW_INITIAL_BOX 2      /* direction uniform in a longitude/latitude box */
 #define AW_INITIAL_GAUSSIAN 3 /* p_x, p_y Gaussian, p_z from the energy, random sign */
+#define AW_INITIAL_GRID 4     /* trajectory i = point i of a grid (aw_grid.h), X fixed */
+#define AW_GRID_HEALPIX 0     /* momentum directions: HEALPix pixel centres, RING order */
+#define AW_GRID_LONLAT 1      /* momentum directions: n_lon x n_lat cell centres of a lon/lat box */
+#define AW_GRID_PLANE 2       /* two momenta on an n1 x n2 grid, the third fixed */
 
 /* ------------------------------------------------------ parameter blocks
  * The structs the host fills and every kernel reads: aw_param_blocks.h. */
 #define AW_MAX_STAGES 16
-#define AW_MAX_MODEL_PARAMS 64
+#define AW_MAX_MODEL_PARAMS 192 /* fourier: 7 + 5 x 32 harmonics (models/aw_fourier.h) */
 #define AW_MAX_FRAMES 64
 
 /* ------------------------------------------------------- histograms
@@ -68,6 +78,16 @@
 #define AW_STATUS_ENERGY 2
 #define AW_STATUS_INITIAL 3
 #define AW_STATUS_LEFT_REGION 4
+
+/* ------------------------------------------------------- indicator records
+ * Per trajectory, when an indicator is asked for (NaN for a flagged one):
+ * FLI, mean MEGNO <Y>, the Lyapunov exponent from MEGNO's slope (1/T), the
+ * finite-time Lyapunov exponent (1/T). */
+#define AW_IND_REALS 4
+#define AW_IND_FLI 0
+#define AW_IND_MEGNO 1
+#define AW_IND_MEGNO_LYAPUNOV 2
+#define AW_IND_LYAPUNOV 3
 
 /* Energy statistics: every work-group writes (max, sum) of max|dE| over its
  * binned trajectories; the host reduces the groups in index order. */

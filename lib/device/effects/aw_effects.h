@@ -15,6 +15,7 @@
 #include "effects/aw_fx_binning.h"
 #include "effects/aw_fx_common.h"
 #include "effects/aw_fx_energy.h"
+#include "effects/aw_fx_indicators.h"
 #include "effects/aw_fx_states.h"
 #include "effects/aw_fx_testing.h"
 
@@ -24,6 +25,7 @@ typedef struct {
   lreal e0, emax;       /* energy_error: E(0), max |dE| so far */
   lreal over;           /* max_energy_error: 1 where |dE| exceeded the limit in this window */
   lreal inside;         /* confine: 0 once a lane has left the region */
+  aw_tangent tangent;   /* indicators: the tangent vector and its observers */
 } aw_fx;
 
 AW_FN void aw_fx_begin(aw_config cfg, aw_fx* fx, aw_lstate* s, lreal accepted, aw_lanes l,
@@ -40,6 +42,24 @@ AW_FN void aw_fx_begin(aw_config cfg, aw_fx* fx, aw_lstate* s, lreal accepted, a
   fx->over = AW_LSPLAT(AW_R(0.0));
   fx->inside = AW_LSPLAT(AW_R(1.0));
   if (AW_HAS(AW_F_ENERGY)) fx->e0 = aw_energy(s, rp);
+  aw_tangent_begin(&fx->tangent, rp); /* a few stores; every field defined for the run-time bits of the cpu backend */
+}
+
+/* The force at the initial state (and, with the indicators, the Hessian). */
+AW_FN void aw_fx_first_force(aw_config cfg, aw_fx* fx, aw_lstate* s, AW_CONSTANT aw_rparams* rp) {
+  if (AW_HAS(AW_F_TANGENT))
+    aw_tangent_force(s, &fx->tangent, rp);
+  else
+    aw_force(s, rp);
+}
+
+/* One segment of steps: the plain stepper, or with the indicators the same
+ * steps carrying the tangent vector (aw_tangent.h). */
+AW_FN void aw_fx_segment(aw_config cfg, aw_fx* fx, aw_lstate* s, aw_i64 nsteps, AW_CONSTANT aw_rparams* rp) {
+  if (AW_HAS(AW_F_TANGENT))
+    aw_segment_tangent(cfg, s, &fx->tangent, nsteps, rp);
+  else
+    aw_segment(s, nsteps, rp, cfg.stages, cfg.kick_first);
 }
 
 AW_FN void aw_fx_window_begin(aw_config cfg, aw_fx* fx) { fx->over = AW_LSPLAT(AW_R(0.0)); }
@@ -80,7 +100,7 @@ AW_FN void aw_fx_window_end(aw_config cfg, aw_fx* fx, aw_i64 w, lreal dx, lreal 
  * in the histogram and, for binned lanes, in this item's (max, sum), which
  * the caller reduces over the work-group; the final state records. */
 AW_FN void aw_fx_finish(aw_config cfg, aw_fx* fx, const aw_lstate* s, aw_lanes l, aw_outputs out, real* emax,
-                        real* esum) {
+                        real* esum, AW_CONSTANT aw_rparams* rp) {
   real amax[AW_LANES];
   AW_STORE_LANES(fx->emax, amax);
   *emax = AW_R(0.0);
@@ -97,6 +117,9 @@ AW_FN void aw_fx_finish(aw_config cfg, aw_fx* fx, const aw_lstate* s, aw_lanes l
       }
     }
     if (AW_HAS(AW_F_FINAL_STATES)) aw_store_final(out, l.first + (aw_u64)j - l.chunk_first, s, j, st);
+    if (AW_HAS(AW_F_TANGENT))
+      aw_store_indicators(cfg, out.indicators, l.first + (aw_u64)j - l.chunk_first, &fx->tangent, j,
+                          st == AW_STATUS_OK || st == AW_STATUS_LEFT_REGION, rp);
   }
 }
 

@@ -26,6 +26,7 @@ typedef struct {
   AW_GLOBAL real* initial_r;   /* AW_STATE_REALS per trajectory of the chunk */
   AW_GLOBAL real* final_r;     /* AW_STATE_REALS per trajectory of the chunk */
   AW_GLOBAL aw_i64* final_i;   /* AW_STATE_INTS per trajectory of the chunk */
+  AW_GLOBAL real* indicators;  /* AW_IND_REALS per trajectory of the chunk (chaos indicators) */
 } aw_outputs;
 
 /* The trajectories of one work-item: first .. first + AW_LANES - 1; those at

@@ -3,6 +3,7 @@
 
 #include "arnoldweb/accuracy.hpp"
 #include "arnoldweb/analysis.hpp"
+#include "arnoldweb/checkpoint.hpp"
 #include "arnoldweb/device.hpp"
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/job.hpp"

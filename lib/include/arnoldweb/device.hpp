@@ -40,6 +40,7 @@ struct ChunkOutput {
   std::vector<double> initial_r;        // AW_STATE_REALS per trajectory, when asked
   std::vector<double> final_r;          // AW_STATE_REALS per trajectory, when asked
   std::vector<std::int64_t> final_i;    // AW_STATE_INTS per trajectory, when asked
+  std::vector<double> indicators;       // AW_IND_REALS per trajectory, when an indicator is asked
 };
 
 class Backend {

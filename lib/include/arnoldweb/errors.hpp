@@ -79,6 +79,15 @@ class OutputRefused : public OutputError {
   int exit_code() const noexcept override { return 2; }
 };
 
+// A checkpoint that cannot be used: damaged, written by another version, or
+// of another scene. Bad input: exit code 2; the checkpoint is left as it is.
+class CheckpointError : public Error {
+ public:
+  CheckpointError(const std::string& path, const std::string& message)
+      : Error((path.empty() ? std::string() : path + ": ") + message) {}
+  int exit_code() const noexcept override { return 2; }
+};
+
 // The user interrupted a run (SIGINT); what was computed has been written.
 class Interrupted : public Error {
  public:

@@ -2,12 +2,14 @@
 // renamed into place, so a failed write (full disk) leaves no partial file.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "arnoldweb/plan.hpp"
 #include "arnoldweb/result.hpp"
+#include "arnoldweb/run.hpp"
 
 namespace arnoldweb {
 
@@ -23,6 +25,40 @@ struct OutputOptions {
   std::string scene_file;
   // Refuse before computing when the file system has less free than this.
   std::uint64_t expected_bytes = 0;
+  // The staging directory this run made earlier for its checkpoints
+  // (CheckpointStore::staging()): the outputs are written into it and it is
+  // moved into place, its checkpoint removed (consumed). "" : a new one.
+  std::string staging;
+};
+
+// Checkpoints beside an output directory: staging directories
+// <dir>.partial-PID that hold a checkpoint (written by a run that was stopped
+// or killed). Nothing removes them but a resumed run that completes.
+struct FoundCheckpoint {
+  std::string staging_dir;  // <dir>.partial-PID
+  std::string file;         // its checkpoint
+  long pid = 0;
+  bool running = false;  // that process is still alive (then it is not resumable)
+};
+std::vector<FoundCheckpoint> find_checkpoints(const std::string& dir);
+
+// Where a run's checkpoints go: <dir>.partial-PID, made (with the staging
+// marker) at the first save, each checkpoint written atomically. Pass
+// staging() as OutputOptions::staging to write_job.
+class CheckpointStore final : public CheckpointSink {
+ public:
+  CheckpointStore(std::string dir, OutputOptions options);
+  // Takes over a checkpoint found beside the directory (renaming its staging
+  // directory to this process's) and returns its image. Throws OutputError
+  // (a running process's, unreadable) .
+  std::string adopt(const FoundCheckpoint& found);
+  void save(const std::string& image) override;
+  const std::string& staging() const { return staging_; }
+  std::string file() const;
+
+ private:
+  std::string dir_, staging_;
+  OutputOptions options_;
 };
 
 // Checks, before anything is computed, that `dir` can receive a job's
@@ -59,6 +95,8 @@ std::string summary_json(const Plan& plan, const Result& result, const std::vect
 void write_text_file(const std::string& path, const std::string& text);
 void write_map_hdf5(const std::string& path, const Plan& plan, const Result& result);
 void write_states_hdf5(const std::string& path, const Plan& plan, const Result& result);
+// indicators.h5: the chaos indicators and the grid (docs/indicators.md).
+void write_indicators_hdf5(const std::string& path, const Plan& plan, const Result& result);
 
 struct RenderOptions {
   int width = 900;          // pixels
@@ -67,6 +105,9 @@ struct RenderOptions {
   std::string title;        // first line at the top
   std::string caption;      // small line at the bottom
   int resonance_order = 0;  // draw and label the circles m.P = 0 with max |m_i| <= this (0: none)
+  // if not empty (and resonance_order > 0): draw these circles m.V = 0 instead, the harmonics of the
+  // scene's model (docs/models.md)
+  std::vector<std::array<int, 3>> resonances;
 };
 // Orthographic view of the sphere (like the paper's figures), with colour bar.
 void render_sphere_png(const std::string& path, const std::vector<std::uint64_t>& map, int nside,

@@ -27,6 +27,9 @@ struct KernelConfig {
   bool kick_first = true;
   int initial = 0;  // AW_INITIAL_*
   int model = 0;    // AW_MODEL_* (lib/device/models/aw_models.h)
+  // An expression model's device header (model.kind = "expression", docs/models.md),
+  // compiled as models/aw_expression.h; empty for the built-in models.
+  std::string model_source;
 
   // -D options for the OpenCL and CUDA compilers (without lanes).
   std::string defines() const;
@@ -38,15 +41,23 @@ std::vector<std::string> feature_names(std::uint32_t features);
 
 // The step-size guard: h k |p|max against the splitting resonance at pi.
 struct StepGuard {
-  double p_max = 0;     // sqrt(2 (E + 2)): largest momentum on the shell
-  double value = 0;     // h k |p|max with h in time units (step * 2 pi), k = 2
+  double p_max = 0;     // sqrt(2 (E + 2)): largest momentum on the shell (other models: omega / 2)
+  double value = 0;     // h omega with h in time units (step * 2 pi); the paper's model: omega = k |p|max, k = 2
+  double omega = 0;     // the model's largest frequency (radians per time unit)
+  std::string basis;    // how omega was found, for messages
   double limit = 0;     // pi: refuse at or above
   double advised = 0;   // pi / 2: warn above
   double safe_step = 0; // largest step (in T) dividing the schedule with value <= advised
   bool refused() const { return value >= limit; }
   bool warned() const { return value > advised; }
 };
-StepGuard step_guard(double energy, double step, double average, double energy_every);
+StepGuard step_guard(double energy, double step, double average, double energy_every);  // the paper's model
+StepGuard step_guard_at(double omega, double step, double average, double energy_every);  // any omega
+// The largest frequency omega of the scene's model at its energy (the guard's
+// h omega): the paper's model k |p|max; other models from their kinetic
+// coefficients, the range and Hessian bound of V and their wave vectors
+// (docs/models.md). Throws SceneError for a scene whose model keys are wrong.
+double largest_frequency(const Scene& scene, std::string* basis = nullptr);
 
 struct Plan {
   Scene scene;

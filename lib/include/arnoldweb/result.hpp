@@ -46,6 +46,11 @@ struct Result {
   // AW_STATE_INTS integers (winding x, y, z, status) per trajectory.
   std::vector<double> initial_r, final_r;
   std::vector<std::int64_t> final_i;
+  // Chaos indicators of completed trajectories, in index order (when asked
+  // for): AW_IND_REALS reals per trajectory (FLI, MEGNO <Y>, Lyapunov exponent
+  // from MEGNO's slope in 1/T, finite-time Lyapunov exponent in 1/T; NaN where
+  // not asked or flagged). docs/indicators.md.
+  std::vector<double> indicators;
 
   double wall_seconds = 0;
   double trajectory_steps = 0;  // completed * steps per trajectory
@@ -57,5 +62,6 @@ struct Result {
 std::string digest_map(const Result& r);
 std::string digest_initial_states(const Result& r);  // "" if none
 std::string digest_final_states(const Result& r);    // "" if none
+std::string digest_indicators(const Result& r);      // "" if none
 
 }  // namespace arnoldweb

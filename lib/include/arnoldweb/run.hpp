@@ -3,6 +3,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <string>
 
 #include "arnoldweb/device.hpp"
 #include "arnoldweb/plan.hpp"
@@ -18,6 +19,32 @@ class Progress {
   virtual void finish(std::uint64_t done, std::uint64_t total, double seconds) = 0;
 };
 
+// Where a run's checkpoints go (checkpoint.hpp writes and reads them).
+class CheckpointSink {
+ public:
+  virtual ~CheckpointSink() = default;
+  // Stores a checkpoint image atomically, replacing the previous one. Throws OutputError.
+  virtual void save(const std::string& image) = 0;
+};
+
+// Checkpointing of a job (run_job): its state is saved every `every_seconds`
+// of wall-clock time and when a stop request ends it early.
+struct Checkpointing {
+  CheckpointSink* sink = nullptr;
+  // > 0: every so many seconds; 0: only when stopped early; < 0 ("auto"):
+  // every 600 s (and when stopped) once the job's remaining time, estimated
+  // from its progress, takes it past an hour; otherwise never.
+  double every_seconds = -1;
+  // A checkpoint image to continue from ("" to start afresh); a damaged one,
+  // or one of another scene or version, is a CheckpointError.
+  std::string resume;
+  std::string resume_path;  // where it was read, for messages
+  // Out: how many checkpoints were saved, and whether the last one holds a
+  // job that was stopped before it was complete.
+  int saved = 0;
+  bool saved_incomplete = false;
+};
+
 struct RunOptions {
   Progress* progress = nullptr;
   // Set to true (e.g. from a signal handler) to stop after the current chunk;
@@ -26,6 +53,8 @@ struct RunOptions {
   // Target seconds per launch when the scene leaves the chunk size to the
   // runner: short enough for progress and display watchdogs.
   double chunk_seconds = 0.25;
+  // Checkpoints of the job (run_job only; run() ignores it).
+  Checkpointing* checkpoint = nullptr;
 };
 
 // Run every trajectory of the plan. Chunks are a partition of the index range,

@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace arnoldweb {
@@ -49,6 +50,19 @@ struct AutoStep {
 struct Scene {
   // [model]
   double energy = 15.0;  // E; effective perturbation 2/E
+  // model.kind and the built-in models' parameters (docs/models.md, lib/src/physics/models.cpp)
+  std::string model_kind = "seibert2011";
+  double model_epsilon = 0.01;  // fgl: eps
+  // fourier: harmonics [k_x, k_y, k_z, c, phi] (phi in radians); the default is the paper's potential
+  std::vector<std::array<double, 5>> model_harmonics = {{1, 1, 0, 0.5, 0},   {1, -1, 0, 0.5, 0},
+                                                        {1, 1, 2, 0.25, 0},  {1, 1, -2, 0.25, 0},
+                                                        {1, -1, 2, 0.25, 0}, {1, -1, -2, 0.25, 0}};
+  std::array<double, 3> model_kinetic_a = {1, 1, 1};  // fourier: T = sum a_i p_i^2/2 + b_i p_i
+  std::array<double, 3> model_kinetic_b = {0, 0, 0};
+  // model.kind = "expression" (docs/models.md, "Expression models"): V over x, y, z
+  // and its named parameters (sorted by name, as TOML tables read)
+  std::string model_potential;
+  std::vector<std::pair<std::string, double>> model_parameters;
 
   // [ensemble]
   std::uint64_t trajectories = 100000;
@@ -77,6 +91,9 @@ struct Scene {
   double average = 50.0;   // averaging window dt, in T
   double duration = 50.0;  // propagation time t_p, in T
   std::string device = "auto";
+  // run.checkpoint_every: wall-clock seconds between checkpoints; 0: "off";
+  // -1: "auto" (on, every 10 min, for runs estimated above an hour)
+  double checkpoint_every = -1;
 
   // [observe]
   bool velocity_map = true;
@@ -97,6 +114,22 @@ struct Scene {
   double confine_width = 10.0;
   // observe.frames: one map per span [t_k, t_k+1) of window start times, in T
   std::vector<double> frame_times;
+
+  // Chaos indicators (docs/indicators.md): observe.fli, .megno, .lyapunov,
+  // the initial tangent vector (dX in radians, dP; normalised when planned),
+  // and grids of initial conditions (ensemble.initial = "grid").
+  bool fli = false;
+  bool megno = false;
+  bool lyapunov = false;
+  std::vector<double> tangent_initial = {0.3, -0.7, 0.5, 0.2, 0.6, -0.1};
+  std::string grid_kind = "healpix";                // ensemble.grid.kind: healpix, lonlat, plane
+  int grid_nside = 16;                              // ensemble.grid.nside (healpix)
+  std::array<double, 2> grid_resolution = {64, 64}; // ensemble.grid.resolution (lonlat, plane)
+  std::array<double, 2> grid_range1 = {-0.5, 1.5};  // ensemble.grid.range1 (plane: first momentum)
+  std::array<double, 2> grid_range2 = {-0.5, 1.5};  // ensemble.grid.range2 (plane: second momentum)
+  std::array<double, 2> grid_axes = {0, 1};         // ensemble.grid.axes (plane: which momenta, 0-based)
+  double grid_fixed = 0.0;                          // ensemble.grid.fixed (plane: the third momentum)
+  std::vector<double> grid_position = {0.0, 0.0, 0.0};  // ensemble.grid.position, radians
 
   // [output]
   std::string output_dir = "out";

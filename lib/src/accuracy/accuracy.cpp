@@ -53,9 +53,9 @@ double step_unit(const Scene& s) {
   return energy ? s.energy_every : s.average;
 }
 
-// Largest step (in T) with h k |p|max <= pi/2 (the guard's advice).
-double advised_step(double energy) {
-  const StepGuard g = step_guard(energy, 1.0, 1.0, 1.0);
+// Largest step (in T) with h omega <= pi/2 (the guard's advice; omega: largest_frequency).
+double advised_step(double omega) {
+  const StepGuard g = step_guard_at(omega, 1.0, 1.0, 1.0);
   return g.advised / g.value;
 }
 
@@ -209,7 +209,7 @@ class Pilot {
 // The cheapest step of one method meeting `target` (pilot max|dE|), a
 // divisor every/n of the pilot sample interval, at most `largest`.
 AccuracyChoice cheapest_step(const MethodFit& f, double target, double every, double largest,
-                             double energy) {
+                             double omega) {
   AccuracyChoice c;
   c.method = f.method;
   c.stages = f.stages;
@@ -240,7 +240,7 @@ AccuracyChoice cheapest_step(const MethodFit& f, double target, double every, do
   c.predicted_max = pm(c.step);
   c.predicted_median = f.predict_median(c.step);
   c.forces_per_t = f.stages / c.step;
-  c.guard_value = step_guard(energy, c.step, every, every).value;
+  c.guard_value = step_guard_at(omega, c.step, every, every).value;
   c.meets = true;
   return c;
 }
@@ -314,7 +314,8 @@ AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tole
   Pilot pilot(scene, backend, n, duration, every);
 
   // ---- the methods: steps h0, h0/2, h0/4 below the guard's advice
-  const double h_adv = advised_step(scene.energy);
+  const double omega = largest_frequency(scene);
+  const double h_adv = advised_step(omega);
   const std::int64_t n0 = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(every / h_adv - 1e-9)));
   const double largest = every / static_cast<double>(n0);
   for (const Method& m : methods()) {
@@ -334,7 +335,7 @@ AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tole
   if (o.prefilter && o.steps_per_method > 2) {
     double best = kInf;  // the cheapest conservative prediction after two steps
     for (const MethodFit& f : rep.fits) {
-      const AccuracyChoice c = cheapest_step(f, target, every, largest, scene.energy);
+      const AccuracyChoice c = cheapest_step(f, target, every, largest, omega);
       if (c.meets) best = std::min(best, c.forces_per_t);
     }
     for (MethodFit& f : rep.fits) {
@@ -367,7 +368,7 @@ AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tole
         a.predicted_median = f.predict_median(scene.step);
       }
     a.forces_per_t = m.stages / scene.step;
-    a.guard_value = step_guard(scene.energy, scene.step, unit, unit).value;
+    a.guard_value = step_guard_at(omega, scene.step, unit, unit).value;
     a.meets = p.max <= target;
     if (!a.meets) a.note = "pilot max " + fmt(p.max) + " > " + fmt(target);
     rep.as_written_measured = true;
@@ -380,7 +381,7 @@ AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tole
   // ---- the cheapest choice, checked on the pilot ensemble
   for (int attempt = 0;; ++attempt) {
     rep.per_method.clear();
-    for (const MethodFit& f : rep.fits) rep.per_method.push_back(cheapest_step(f, target, every, largest, scene.energy));
+    for (const MethodFit& f : rep.fits) rep.per_method.push_back(cheapest_step(f, target, every, largest, omega));
     const AccuracyChoice* best = nullptr;
     for (const AccuracyChoice& c : rep.per_method)
       if (c.meets && (!best || c.forces_per_t < best->forces_per_t)) best = &c;

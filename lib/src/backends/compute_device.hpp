@@ -45,6 +45,7 @@ struct EnsembleBuffers {
   DeviceMemory* initial_r = nullptr;
   DeviceMemory* final_r = nullptr;
   DeviceMemory* final_i = nullptr;
+  DeviceMemory* indicators = nullptr;  // AW_IND_REALS per trajectory (chaos indicators)
   DeviceMemory* group_stats = nullptr;
 };
 

@@ -51,6 +51,8 @@ class EnsembleBackend final : public Backend {
     out.initial_r.clear();
     out.final_r.clear();
     out.final_i.clear();
+    out.indicators.clear();
+    if (features_ & AW_F_TANGENT) read_reals(*b_.indicators, count * AW_IND_REALS, out.indicators);
     if (features_ & AW_F_INITIAL_STATES) read_reals(*b_.initial_r, count * AW_STATE_REALS, out.initial_r);
     if (features_ & AW_F_FINAL_STATES) {
       read_reals(*b_.final_r, count * AW_STATE_REALS, out.final_r);
@@ -91,8 +93,10 @@ class EnsembleBackend final : public Backend {
     const std::size_t state_r = (features_ & AW_F_INITIAL_STATES) ? max_chunk_ * AW_STATE_REALS * rs : 0;
     const std::size_t final_r = (features_ & AW_F_FINAL_STATES) ? max_chunk_ * AW_STATE_REALS * rs : 0;
     const std::size_t final_i = (features_ & AW_F_FINAL_STATES) ? max_chunk_ * AW_STATE_INTS * 8 : 0;
+    const std::size_t indicators = (features_ & AW_F_TANGENT) ? max_chunk_ * AW_IND_REALS * rs : 0;
     const double need = static_cast<double>(reals.size() + sizeof(IntParams) + hist * 12 + AW_C_COUNT * 4 +
-                                            AW_GROUP_STATS * groups * rs + state_r + final_r + final_i);
+                                            AW_GROUP_STATS * groups * rs + state_r + final_r + final_i +
+                                            indicators);
     const std::uint64_t free = dev_->free_memory();
     if (free && need > static_cast<double>(free))
       throw DeviceError(info().id, "", 0,
@@ -113,6 +117,7 @@ class EnsembleBackend final : public Backend {
     if (state_r) b_.initial_r = make(state_r, "initial states (ensemble.chunk per launch)");
     if (final_r) b_.final_r = make(final_r, "final states (ensemble.chunk per launch)");
     if (final_i) b_.final_i = make(final_i, "final states (ensemble.chunk per launch)");
+    if (indicators) b_.indicators = make(indicators, "chaos indicators (ensemble.chunk per launch)");
     dev_->finish("preparing buffers");
   }
 

@@ -13,20 +13,30 @@ std::string dirname_of(const std::string& name) {
   return p == std::string::npos ? std::string() : name.substr(0, p + 1);
 }
 
-// The embedded name an include refers to, or "" if it is not embedded.
-std::string resolve(const std::string& target, const std::string& from) {
+using Extra = std::vector<std::pair<std::string, std::string>>;
+
+const std::string* extra_file(const std::string& name, const Extra& extra) {
+  for (const auto& [n, text] : extra)
+    if (n == name) return &text;
+  return nullptr;
+}
+
+// The embedded (or extra) name an include refers to, or "" if there is none.
+std::string resolve(const std::string& target, const std::string& from, const Extra& extra) {
   for (const std::string& candidate :
        {dirname_of(from) + target, target, "Random123/" + target}) {
+    if (extra_file(candidate, extra)) return candidate;
     for (const auto& [name, text] : embedded_kernel_sources())
       if (candidate == name) return candidate;
   }
   return "";
 }
 
-void flatten_into(const std::string& name, std::ostringstream& out, int depth) {
+void flatten_into(const std::string& name, std::ostringstream& out, int depth, const Extra& extra) {
   if (depth > 32) throw std::runtime_error("kernel sources: include nesting too deep at " + name);
   static const std::regex include_re(R"(^\s*#\s*include\s*[<"]([^>"]+)[>"].*$)");
-  std::istringstream in{std::string(embedded_file(name))};
+  const std::string* own = extra_file(name, extra);
+  std::istringstream in{own ? *own : std::string(embedded_file(name))};
   std::string line;
   out << "#line 1 \"" << name << "\"\n";
   int lineno = 0;
@@ -34,9 +44,9 @@ void flatten_into(const std::string& name, std::ostringstream& out, int depth) {
     ++lineno;
     std::smatch m;
     if (std::regex_match(line, m, include_re)) {
-      const std::string target = resolve(m[1].str(), name);
+      const std::string target = resolve(m[1].str(), name, extra);
       if (!target.empty()) {
-        flatten_into(target, out, depth + 1);
+        flatten_into(target, out, depth + 1, extra);
         out << "#line " << lineno + 1 << " \"" << name << "\"\n";
         continue;
       }
@@ -53,9 +63,11 @@ std::string_view embedded_file(const std::string& name) {
   throw std::out_of_range("no embedded kernel source named " + name);
 }
 
-std::string flatten_source(const std::string& name) {
+std::string flatten_source(const std::string& name) { return flatten_source(name, {}); }
+
+std::string flatten_source(const std::string& name, const Extra& extra) {
   std::ostringstream out;
-  flatten_into(name, out, 0);
+  flatten_into(name, out, 0, extra);
   return out.str();
 }
 

@@ -20,6 +20,13 @@ std::string_view embedded_file(const std::string& name);
 // recursively: one self-contained translation unit (OpenCL C has no in-memory
 // include mechanism). Includes of other files are left as they are.
 std::string flatten_source(const std::string& name);
+// The same, where `extra` names further in-memory files (name, text) that
+// includes resolve to (an expression model's models/aw_expression.h).
+std::string flatten_source(const std::string& name, const std::vector<std::pair<std::string, std::string>>& extra);
+
+// The name an expression model's emitted header is compiled under (included
+// by lib/device/models/aw_models.h for AW_MODEL 1000).
+inline const char* expression_model_header() { return "models/aw_expression.h"; }
 
 // Headers for NVRTC, by every name they are included as: the embedded files
 // plus minimal stand-ins for the C++ library headers Random123 names (NVRTC

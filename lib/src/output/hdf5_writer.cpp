@@ -223,3 +223,80 @@ void write_states_hdf5(const std::string& path, const Plan& plan, const Result& 
 }
 
 }  // namespace arnoldweb
+
+namespace arnoldweb {
+
+// indicators.h5 (docs/indicators.md): one dataset per indicator asked for, of
+// the grid's shape (healpix: 12 nside^2 in RING order; lonlat and plane:
+// [n2][n1], row = the second coordinate), the grid's coordinates, the scene.
+void write_indicators_hdf5(const std::string& path, const Plan& plan, const Result& r) {
+  const Scene& s = plan.scene;
+  H5Writer h(path);
+  {
+    common_attributes(h, h.root(), plan, r);
+    const hsize_t n = r.indicators.size() / AW_IND_REALS;
+    std::vector<hsize_t> dims = {n};
+    const bool grid = s.initial == "grid";
+    if (grid && s.grid_kind != "healpix" && n == static_cast<hsize_t>(s.grid_resolution[0] * s.grid_resolution[1]))
+      dims = {static_cast<hsize_t>(s.grid_resolution[1]), static_cast<hsize_t>(s.grid_resolution[0])};
+    auto column = [&](int k) {
+      std::vector<double> v(n);
+      for (hsize_t t = 0; t < n; ++t) v[t] = r.indicators[t * AW_IND_REALS + k];
+      return v;
+    };
+    struct Row {
+      bool asked;
+      const char* name;
+      int slot;
+      const char* meaning;
+    };
+    const Row rows[] = {
+        {s.fli, "fli", AW_IND_FLI, "max over the run of log|w(t)|, |w(0)| = 1 (natural log)"},
+        {s.megno, "megno", AW_IND_MEGNO, "mean MEGNO <Y>(t) at the end of the run (2: regular)"},
+        {s.megno, "megno_lyapunov", AW_IND_MEGNO_LYAPUNOV, "slope of Y(t) against t (Y ~ lambda t): Lyapunov exponent, 1/T"},
+        {s.lyapunov, "lyapunov", AW_IND_LYAPUNOV, "log|w(t)| / t at the end of the run: finite-time Lyapunov exponent, 1/T"},
+    };
+    for (const Row& row : rows) {
+      if (!row.asked) continue;
+      hid_t d = h.dataset(h.root(), row.name, H5T_NATIVE_DOUBLE, dims, column(row.slot).data());
+      h.attr(d, "meaning", std::string(row.meaning) + "; NaN: trajectory flagged");
+    }
+    h.attr(h.root(), "duration", s.duration);
+    h.attr(h.root(), "tangent_initial", s.tangent_initial);
+    h.attr(h.root(), "digest", digest_indicators(r));
+    if (grid) {
+      hid_t g = h.group("grid");
+      h.attr(g, "kind", s.grid_kind);
+      h.attr(g, "position", s.grid_position);
+      if (s.grid_kind == "healpix") {
+        h.attr(g, "nside", static_cast<std::int64_t>(s.grid_nside));
+        h.attr(g, "ordering", std::string("RING: trajectory i has its momentum along the centre of pixel i"));
+      } else {
+        auto centres = [](double lo, double hi, double count) {
+          std::vector<double> c(static_cast<std::size_t>(count));
+          for (std::size_t j = 0; j < c.size(); ++j) c[j] = lo + (static_cast<double>(j) + 0.5) * (hi - lo) / count;
+          return c;
+        };
+        const bool lonlat = s.grid_kind == "lonlat";
+        const auto a = lonlat ? centres(s.box_lon[0], s.box_lon[1], s.grid_resolution[0])
+                              : centres(s.grid_range1[0], s.grid_range1[1], s.grid_resolution[0]);
+        const auto b = lonlat ? centres(s.box_lat[0], s.box_lat[1], s.grid_resolution[1])
+                              : centres(s.grid_range2[0], s.grid_range2[1], s.grid_resolution[1]);
+        hid_t da = h.dataset(g, lonlat ? "lon" : "axis1", H5T_NATIVE_DOUBLE, {a.size()}, a.data());
+        hid_t db = h.dataset(g, lonlat ? "lat" : "axis2", H5T_NATIVE_DOUBLE, {b.size()}, b.data());
+        h.attr(da, "meaning", std::string(lonlat ? "longitude of the momentum direction, degrees (column i)"
+                                                 : "momentum p[axes[0]] (column i)"));
+        h.attr(db, "meaning", std::string(lonlat ? "latitude of the momentum direction, degrees (row j)"
+                                                 : "momentum p[axes[1]] (row j)"));
+        if (!lonlat) {
+          h.attr(g, "axes", std::vector<double>{s.grid_axes[0], s.grid_axes[1]});
+          h.attr(g, "fixed", s.grid_fixed);
+        }
+        h.attr(g, "ordering", std::string("trajectory j n1 + i is row j, column i (cell centres)"));
+      }
+    }
+  }
+  detail::write_file_atomically(path, h.finish());
+}
+
+}  // namespace arnoldweb

@@ -182,6 +182,8 @@ void remove_stale_staging(const fs::path& final_dir) {
     struct stat st {};
     if (::lstat(it->path().c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) continue;
     if (::lstat((it->path() / kMarker).c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
+    // a checkpoint is kept until a resumed run consumes it
+    if (::lstat((it->path() / kCheckpointFile).c_str(), &st) == 0) continue;
     // everything in it was written by the dead run: files of outputs, temporaries, the marker
     fs::remove_all(it->path(), ec);
   }
@@ -299,6 +301,11 @@ Staging::Staging(const std::string& final_dir, const OutputOptions& options) : o
   final_ = normalise_output_dir(final_dir);
   const fs::path dir(final_);
   check_place(dir, options_, final_);
+  if (!options_.staging.empty()) {  // made earlier by this run (its checkpoints are in it)
+    path_ = options_.staging;
+    adopted_ = true;
+    return;
+  }
   try {
     make_parents(dir, made_, final_);
     remove_stale_staging(dir);
@@ -312,13 +319,18 @@ Staging::Staging(const std::string& final_dir, const OutputOptions& options) : o
 }
 
 Staging::~Staging() {
-  if (done_) return;
+  if (done_ || adopted_) return;
   std::error_code ec;
   fs::remove_all(path_, ec);  // all of it was written by this run
   remove_made(made_);
 }
 
 std::string Staging::keep(const std::string& suffix) {
+  struct stat st {};
+  if (::lstat((fs::path(path_) / kCheckpointFile).c_str(), &st) == 0) {
+    done_ = true;
+    return path_;  // resumable: `arnoldweb resume` finds it under this name
+  }
   const fs::path kept = staging_name(final_, suffix.c_str());
   ::unlink((fs::path(path_) / kMarker).c_str());
   done_ = true;
@@ -328,6 +340,13 @@ std::string Staging::keep(const std::string& suffix) {
 
 std::string Staging::commit() {
   const fs::path dir(final_);
+  ::unlink((fs::path(path_) / kCheckpointFile).c_str());  // consumed: the outputs are complete
+  {  // and the temporaries of checkpoints that a killed process left half-written
+    const std::string tmp = std::string(".") + kCheckpointFile + ".tmp-";
+    std::error_code ec;
+    for (fs::directory_iterator it(path_, ec), end; !ec && it != end; it.increment(ec))
+      if (it->path().filename().string().compare(0, tmp.size(), tmp) == 0) ::unlink(it->path().c_str());
+  }
   ::unlink((fs::path(path_) / kMarker).c_str());
   done_ = true;
   struct stat st {};

@@ -12,7 +12,9 @@
 //    current directory, its parents, the scene file's directory and its
 //    parents, / and $HOME are never replaced;
 //  - staging directories left by processes that died are removed on the next
-//    run into the same place (only those that carry arnoldweb's marker).
+//    run into the same place (only those that carry arnoldweb's marker), except
+//    those holding a checkpoint (kCheckpointFile): a checkpoint is removed only
+//    when a resumed run that consumed it commits its outputs.
 #pragma once
 
 #include <cstdint>
@@ -22,6 +24,9 @@
 #include "arnoldweb/output.hpp"
 
 namespace arnoldweb::detail {
+
+// The checkpoint of a run, inside its staging directory.
+constexpr const char* kCheckpointFile = "checkpoint.awck";
 
 // `dir` without trailing slashes and with "." and ".." parts resolved
 // lexically; throws OutputRefused for an empty name.
@@ -54,14 +59,18 @@ class Staging {
   // could not be removed completely).
   std::string commit();
   // Keeps what was written under a name that nothing removes automatically,
-  // and returns that name (after a failed write).
+  // and returns that name (after a failed write). A staging directory holding
+  // a checkpoint keeps its name (it stays resumable).
   std::string keep(const std::string& suffix);
+  // Leaves the directory in place when this object goes (it holds a checkpoint).
+  void hold() { done_ = true; }
 
  private:
   std::string final_, path_;
   std::vector<std::string> made_;  // parent directories this run created
   OutputOptions options_;
   bool done_ = false;
+  bool adopted_ = false;  // options.staging: made earlier (it holds the run's checkpoint)
 };
 
 }  // namespace arnoldweb::detail

@@ -9,6 +9,7 @@
 #include "arnoldweb/job.hpp"
 #include "arnoldweb/output.hpp"
 #include "aw_params.h"
+#include "output/indicator_pictures.hpp"
 #include "output/output_dir.hpp"
 #include "output/pictures.hpp"
 
@@ -37,11 +38,16 @@ void write_run_files(const Plan& plan, const Result& result, const fs::path& dir
     file("map.h5", [&](const std::string& p) { write_map_hdf5(p, plan, result); });
   if (!result.initial_r.empty() || !result.final_r.empty())
     file("states.h5", [&](const std::string& p) { write_states_hdf5(p, plan, result); });
+  if (!result.indicators.empty())
+    file("indicators.h5", [&](const std::string& p) { write_indicators_hdf5(p, plan, result); });
   double lon, lat;
   if (!result.frames.empty() && detail::initial_centre(plan.scene, &lon, &lat))
     file("frames_spread.csv",
          [&](const std::string& p) { write_text_file(p, frames_spread_csv(plan, result, lon, lat)); });
   if (plan.scene.images) detail::write_pictures(plan, result, dir.string(), names);
+#ifdef ARNOLDWEB_HAVE_CAIRO
+  if (plan.scene.images) detail::write_indicator_pictures(plan, result, dir.string(), names);
+#endif
 }
 
 std::vector<std::string> prefixed(const std::string& sub, const std::vector<std::string>& names) {
@@ -56,6 +62,7 @@ double part_bytes(const Plan& p) {
   b += 8.0 * static_cast<double>(p.hist_size + (p.frames > 1 ? p.npix : 0)) + 16e3;  // map.h5
   if (p.scene.initial_states) b += n * AW_STATE_REALS * 8;
   if (p.scene.final_states) b += n * (AW_STATE_REALS * 8 + 3 * 8 + AW_STATE_INTS * 8);
+  if (p.scene.fli || p.scene.megno || p.scene.lyapunov) b += n * AW_IND_REALS * 8 + 16e3 + (p.scene.images ? 3e6 : 0);
   if (p.scene.images) b += (p.scene.velocity_map ? 3 : 0) * 1.5e6 + (p.scene.zoom ? 1.5e6 : 0) + p.frames * 1.6e6;
   return b;
 }

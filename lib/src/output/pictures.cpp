@@ -10,6 +10,8 @@
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/version.hpp"
 #include "os/process.hpp"
+#include "physics/models.hpp"
+#include "plan/kernel_params.hpp"
 #include "output/atomic_file.hpp"
 
 namespace arnoldweb::detail {
@@ -61,6 +63,9 @@ RenderOptions picture_options(const Plan& plan, const Result& r) {
   RenderOptions o;
   o.title = title_of(plan, r);
   o.caption = caption_of(r);
+  // the circles of the model's own harmonics (the paper's: every resonance up to an order)
+  if (plan.scene.model_kind != "seibert2011" && plan.params)
+    o.resonances = detail::model_of(plan.scene).wave_vectors(detail::params(plan).reals);
   double lon, lat;
   if (initial_centre(plan.scene, &lon, &lat)) {
     o.view_lon = lon;
@@ -103,7 +108,7 @@ void write_pictures(const Plan& plan, const Result& r, const std::string& dir, s
     out.push_back("map_mollweide.png");
     RenderOptions overlay = o;
     overlay.resonance_order = 2;
-    overlay.title = o.title + ";  circles m.P = 0, |m_i| <= 2";
+    overlay.title = o.title + (o.resonances.empty() ? ";  circles m.P = 0, |m_i| <= 2" : ";  circles k.V = 0 of the model's harmonics");
     render_sphere_png(dir + "/map_resonances.png", r.map, plan.scene.nside, overlay);
     out.push_back("map_resonances.png");
   }

@@ -17,7 +17,7 @@ void render_figure_png(const std::string& path, const Plan& plan, const Result& 
   const detail::View view(o.view_lon, o.view_lat);
   const double radius = 0.4 * h, cx = 0.06 * o.width + radius, cy = 0.53 * h;
   detail::paint_sphere(c, result.map, plan.scene.nside, view, cx, cy, radius, scale);
-  if (o.resonance_order > 0) detail::draw_circles(c, view, cx, cy, radius, o.resonance_order);
+  if (o.resonance_order > 0) detail::draw_circles(c, view, cx, cy, radius, detail::circles_of(o));
   c.text(cx - radius, cy - radius - 8, "(a)", 14);
   c.colour_bar(cx + radius + 18, cy - 0.8 * radius, 12, 1.6 * radius, scale, "counts");
   // the panels: their zoom squares on the sphere, their histograms to the right

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 
 #include "arnoldweb/output.hpp"
 #include "arnoldweb/sphere.hpp"
@@ -71,9 +72,28 @@ void paint_sphere(Canvas& c, const std::vector<std::uint64_t>& map, int nside, c
           2);
 }
 
-void draw_circles(Canvas& c, const View& view, double cx, double cy, double radius, int max_order) {
+std::vector<Resonance> circles_of(const RenderOptions& o) {
+  if (o.resonances.empty()) return resonances(o.resonance_order);
+  std::vector<Resonance> out;
+  for (std::array<int, 3> m : o.resonances) {
+    const int g = std::gcd(std::gcd(std::abs(m[0]), std::abs(m[1])), std::abs(m[2]));
+    if (g == 0) continue;
+    for (int& v : m) v /= g;
+    const int first = m[0] != 0 ? m[0] : m[1] != 0 ? m[1] : m[2];
+    if (first < 0)
+      for (int& v : m) v = -v;
+    const int order = std::max({std::abs(m[0]), std::abs(m[1]), std::abs(m[2])});
+    bool seen = false;
+    for (const Resonance& r : out) seen = seen || r.m == m;
+    if (!seen) out.push_back({m, order});
+  }
+  std::sort(out.begin(), out.end(), [](const Resonance& a, const Resonance& b) { return a.order < b.order; });
+  return out;
+}
+
+void draw_circles(Canvas& c, const View& view, double cx, double cy, double radius, const std::vector<Resonance>& list) {
   cairo_t* cr = c.cr();
-  for (const Resonance& r : resonances(max_order)) {
+  for (const Resonance& r : list) {
     const Vec3 n = normalised({double(r.m[0]), double(r.m[1]), double(r.m[2])});
     const Vec3 helper = std::fabs(n[2]) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
     const Vec3 a = normalised(cross(n, helper)), b = cross(n, a);
@@ -133,7 +153,7 @@ void render_sphere_png(const std::string& path, const std::vector<std::uint64_t>
   const detail::View view(o.view_lon, o.view_lat);
   const double radius = 0.42 * h, cx = 0.44 * w, cy = 0.52 * h;
   detail::paint_sphere(c, map, nside, view, cx, cy, radius, scale);
-  if (o.resonance_order > 0) detail::draw_circles(c, view, cx, cy, radius, o.resonance_order);
+  if (o.resonance_order > 0) detail::draw_circles(c, view, cx, cy, radius, detail::circles_of(o));
   c.colour_bar(0.86 * w, 0.16 * h, 0.025 * w, 0.68 * h, scale, "counts");
   c.text(0.03 * w, 0.05 * h, o.title, 15);
   char view_text[96];

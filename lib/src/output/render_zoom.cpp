@@ -6,6 +6,7 @@
 #include "arnoldweb/sphere.hpp"
 #include "output/canvas.hpp"
 #include "output/pictures.hpp"
+#include "output/sphere_view.hpp"
 
 namespace arnoldweb::detail {
 
@@ -45,7 +46,7 @@ void render_zoom_png(const std::string& path, const std::vector<std::uint64_t>& 
     cairo_save(cr);
     cairo_rectangle(cr, x0, y0, side, side);
     cairo_clip(cr);
-    for (const Resonance& r : resonances(o.resonance_order)) {
+    for (const Resonance& r : detail::circles_of(o)) {
       const double a = r.m[0] * e1[0] + r.m[1] * e1[1] + r.m[2] * e1[2];
       const double b = r.m[0] * e2[0] + r.m[1] * e2[1] + r.m[2] * e2[2];
       const double c0 = r.m[0] * cv[0] + r.m[1] * cv[1] + r.m[2] * cv[2];

@@ -25,7 +25,10 @@ struct View {
 void paint_sphere(Canvas& c, const std::vector<std::uint64_t>& map, int nside, const View& view, double cx,
                   double cy, double radius, const LogScale& scale);
 // The circles m.P = 0 with max |m_i| <= max_order, labelled.
-void draw_circles(Canvas& c, const View& view, double cx, double cy, double radius, int max_order);
+void draw_circles(Canvas& c, const View& view, double cx, double cy, double radius, const std::vector<Resonance>& list);
+// The circles a picture draws: options.resonances (canonical, coprime) if given, else every
+// resonance up to options.resonance_order.
+std::vector<Resonance> circles_of(const RenderOptions& options);
 // The outline of a gnomonic square (centre lon/lat, full width, degrees).
 void draw_square(Canvas& c, const View& view, double cx, double cy, double radius, const std::array<double, 2>& centre,
                  double width);

@@ -75,6 +75,8 @@ std::string summary_json(const Plan& plan, const Result& r, const std::vector<st
                      {"limit", plan.guard.limit},
                      {"advised", plan.guard.advised},
                      {"safe_step", plan.guard.safe_step},
+                     {"omega", plan.guard.omega},
+                     {"basis", plan.guard.basis},
                      {"overridden", plan.guard.refused() && plan.scene.allow_unsafe_step}};
   j["effects"] = plan.effects();
   j["warnings"] = plan.warnings;

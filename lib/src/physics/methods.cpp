@@ -181,7 +181,7 @@ std::vector<Method> build() {
   // ---- Methods for near-integrable H = A + eps B (A = |P|^2/2, the drift; B = V, the
   // kick; eps_eff = 2/E here). Orders (p, q, r): error O(eps h^p + eps^2 h^q + eps^3 h^r).
   // Coefficients to 20+ digits from the closed forms or the cited tables;
-  // tests/test_method_tables.cpp checks every order numerically (docs/methods.md).
+  // tests/physics/test_method_tables.cpp checks every order numerically (docs/methods.md).
 
   // Laskar & Robutel, Celest. Mech. Dyn. Astron. 80 (2001) 39, "High order symplectic
   // integrators for perturbed Hamiltonian systems": SABA_n (drift-first, drifts at the

@@ -22,6 +22,10 @@ const std::vector<EffectRow>& effects() {
       {"confine", AW_F_CONFINE, [](const Scene& s) { return s.confine; }},
       {"frames", AW_F_FRAMES, [](const Scene& s) { return !s.frame_times.empty(); }},
       {"time_reversal", AW_F_REVERSE, nullptr},
+      {"tangent", AW_F_TANGENT, [](const Scene& s) { return s.fli || s.megno || s.lyapunov; }},
+      {"fli", AW_F_FLI, [](const Scene& s) { return s.fli; }},
+      {"megno", AW_F_MEGNO, [](const Scene& s) { return s.megno; }},
+      {"lyapunov", AW_F_LYAPUNOV, [](const Scene& s) { return s.lyapunov; }},
   };
   return rows;
 }

@@ -21,13 +21,17 @@ std::string mib(double bytes) {
   return b;
 }
 
-bool has_states(const Plan& p) { return p.scene.initial_states || p.scene.final_states; }
+// State records, or the per-trajectory records of the chaos indicators.
+bool has_states(const Plan& p) {
+  return p.scene.initial_states || p.scene.final_states || (p.kernel.features & AW_F_TANGENT);
+}
 
 // Bytes of the state records of one trajectory on the device, and on the host.
 double state_bytes(const Plan& p, double real_size) {
   double b = 0;
   if (p.scene.initial_states) b += AW_STATE_REALS * real_size;
   if (p.scene.final_states) b += AW_STATE_REALS * real_size + AW_STATE_INTS * 8;
+  if (p.kernel.features & AW_F_TANGENT) b += AW_IND_REALS * real_size;
   return b;
 }
 

@@ -16,7 +16,8 @@ std::string KernelConfig::defines() const {
 
 bool KernelConfig::operator==(const KernelConfig& o) const {
   return precision == o.precision && math == o.math && features == o.features && stages == o.stages &&
-         kick_first == o.kick_first && initial == o.initial && model == o.model;
+         kick_first == o.kick_first && initial == o.initial && model == o.model &&
+         model_source == o.model_source;
 }
 
 }  // namespace arnoldweb

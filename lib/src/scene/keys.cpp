@@ -6,8 +6,10 @@
 // (generated: `arnoldweb keys --markdown`) all come from here.
 // Adding a key: a field in Scene (scene.hpp) and a row here.
 #include <algorithm>
+#include <cmath>
 
 #include "arnoldweb/methods.hpp"
+#include "physics/models.hpp"
 #include "scene/reader.hpp"
 
 namespace arnoldweb::scene_detail {
@@ -33,6 +35,27 @@ std::vector<std::string> method_name_list() {
   std::vector<std::string> n;
   for (const Method& m : methods()) n.push_back(m.name);
   return n;
+}
+
+// "auto" -> -1, "off" -> 0, "<number> <unit>" -> seconds; 0.5 (never a valid result) if malformed.
+double wall_seconds(const std::string& w) {
+  if (w == "auto") return -1;
+  if (w == "off") return 0;
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(w, &used);
+  } catch (const std::exception&) {
+    return 0.5;
+  }
+  std::string unit = w.substr(used);
+  unit.erase(0, unit.find_first_not_of(' '));
+  double scale = 0;
+  if (unit == "s" || unit == "sec" || unit == "second" || unit == "seconds") scale = 1;
+  else if (unit == "min" || unit == "minute" || unit == "minutes") scale = 60;
+  else if (unit == "h" || unit == "hour" || unit == "hours") scale = 3600;
+  if (!scale || !std::isfinite(v) || !(v > 0) || v * scale < 1) return 0.5;
+  return v * scale;
 }
 
 bool is_power_of_two(std::int64_t v) { return v > 0 && (v & (v - 1)) == 0; }
@@ -137,11 +160,135 @@ const auto positive = [](double v) { return v > 0; };
 const auto width_ok = [](double w) { return w > 0 && w < 120; };
 const auto at_least_0 = [](std::int64_t v) { return v >= 0; };
 
+// model.kind and the parameters of the built-in models (docs/models.md).
+std::vector<std::string> model_name_list() {
+  std::vector<std::string> n;
+  for (const detail::ModelRow& m : detail::models()) n.push_back(m.name);
+  return n;
+}
+std::string triple(const std::array<double, 3>& v) {
+  return "[" + toml_double(v[0]) + ", " + toml_double(v[1]) + ", " + toml_double(v[2]) + "]";
+}
+std::string harmonics_literal(const Scene& s) {
+  std::string t = "[";
+  for (std::size_t j = 0; j < s.model_harmonics.size(); ++j) {
+    const auto& h = s.model_harmonics[j];
+    t += (j ? ", [" : "[");
+    for (int i = 0; i < 3; ++i) t += std::to_string(static_cast<long long>(h[i])) + ", ";
+    t += toml_double(h[3]) + ", " + toml_double(h[4]) + "]";
+  }
+  return t + "]";
+}
+constexpr int kMaxWaveNumber = 64;
+// [[kx, ky, kz, c, phi], ...]: k integers, c and phi finite, 1 to kMaxHarmonics rows.
+void read_harmonics(Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+  const toml::array* rows = n.as_array();
+  if (!rows) return r.bad(key, n, false);
+  if (rows->empty() || rows->size() > static_cast<std::size_t>(detail::kMaxHarmonics))
+    return r.bad(key, n, true, " (" + std::to_string(rows->size()) + " harmonics)");
+  std::vector<std::array<double, 5>> out;
+  for (std::size_t j = 0; j < rows->size(); ++j) {
+    const std::string where = " (harmonic " + std::to_string(j + 1) + ")";
+    const toml::array* row = (*rows)[j].as_array();
+    if (!row || row->size() != 5) return r.bad(key, n, true, where + ": each harmonic is [kx, ky, kz, c, phi]");
+    std::array<double, 5> h{};
+    for (std::size_t i = 0; i < 5; ++i) {
+      const toml::node& e = (*row)[i];
+      if (auto f = e.as_floating_point()) h[i] = f->get();
+      else if (auto v = e.as_integer()) h[i] = static_cast<double>(v->get());
+      else return r.bad(key, n, true, where + ": element " + std::to_string(i + 1) + " is not a number");
+      if (!std::isfinite(h[i])) return r.bad(key, n, true, where + ": not finite");
+    }
+    for (int i = 0; i < 3; ++i)
+      if (h[i] != std::floor(h[i]) || std::fabs(h[i]) > kMaxWaveNumber)
+        return r.bad(key, n, true, where + ": k must be integers from -" + std::to_string(kMaxWaveNumber) +
+                                       " to " + std::to_string(kMaxWaveNumber));
+    if (h[0] == 0 && h[1] == 0 && h[2] == 0) return r.bad(key, n, true, where + ": k = 0 is a constant");
+    out.push_back(h);
+  }
+  s.model_harmonics = out;
+}
+Read triple_into(std::array<double, 3> Scene::*f, std::function<bool(double)> ok) {
+  return [f, ok](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+    std::vector<double> v;
+    if (r.reals(key, n, v, 3, [&](const std::vector<double>& x) { return ok(x[0]) && ok(x[1]) && ok(x[2]); }))
+      s.*f = {v[0], v[1], v[2]};
+  };
+}
+
+void model_kind_keys(Rows& add) {
+  add("model.kind", "string", quoted_list(model_name_list(), " or "), one_of(model_name_list()),
+      text_of(&Scene::model_kind), choice_into(&Scene::model_kind, model_name_list),
+      "The Hamiltonian H = T(P) + V(X) (`arnoldweb models` lists them, docs/models.md): \"seibert2011\" "
+      "(the paper's), \"fgl\" (Froeschle, Guzzo & Lega 2000), \"fourier\" (harmonics given in the scene).");
+  add("model.epsilon", "float", ">= 0 and <= 1", "a float from 0 to 1", real_of(&Scene::model_epsilon),
+      real_into(&Scene::model_epsilon, [](double e) { return e >= 0 && e <= 1; }),
+      "fgl: the perturbation eps of H = I1^2/2 + I2^2/2 + I3 + eps / (cos phi1 + cos phi2 + cos phi3 + 4) "
+      "(their pictures: 0.001 to 0.04).");
+  add("model.harmonics", "array of [kx, ky, kz, c, phi]",
+      "1 to " + std::to_string(detail::kMaxHarmonics) + " harmonics, k integers in [-" +
+          std::to_string(kMaxWaveNumber) + ", " + std::to_string(kMaxWaveNumber) + "], not all 0",
+      "an array of 1 to " + std::to_string(detail::kMaxHarmonics) +
+          " harmonics [kx, ky, kz, c, phi] (k integers from -" + std::to_string(kMaxWaveNumber) + " to " +
+          std::to_string(kMaxWaveNumber) + ", not all 0; c, phi finite)",
+      harmonics_literal, read_harmonics,
+      "fourier: V = sum c cos(kx x + ky y + kz z + phi), phi in radians. The default is the paper's "
+      "potential cos x cos y (1 + cos 2z) in six harmonics.");
+  add("model.kinetic_a", "array of 3 floats", ">= 0", "an array [a_x, a_y, a_z] of floats >= 0",
+      [](const Scene& s) { return triple(s.model_kinetic_a); },
+      triple_into(&Scene::model_kinetic_a, [](double a) { return a >= 0 && a <= 1e6; }),
+      "fourier and expression: the quadratic kinetic coefficients of T = sum a_i p_i^2/2 + b_i p_i.");
+  add("model.kinetic_b", "array of 3 floats", "finite", "an array [b_x, b_y, b_z] of finite floats",
+      [](const Scene& s) { return triple(s.model_kinetic_b); },
+      triple_into(&Scene::model_kinetic_b, [](double b) { return std::fabs(b) <= 1e6; }),
+      "fourier and expression: the linear kinetic coefficients of T = sum a_i p_i^2/2 + b_i p_i.");
+}
+
+// model.kind = "expression": the potential and its parameters (docs/models.md)
+void expression_model_keys(Rows& add) {
+  add("model.potential", "string", "an expression in x, y, z (docs/models.md)",
+      "a non-empty string: the potential V(x, y, z), e.g. \"eps*cos(x)*cos(y)\"",
+      [](const Scene& s) { return s.model_potential.empty() ? std::string() : toml_string(s.model_potential); },
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        r.text(key, n, s.model_potential, [](const std::string& v) { return !v.empty(); });
+      },
+      "For model.kind = \"expression\": the potential V over x, y, z (radians) and the names in "
+      "model.parameters, with + - * / ^ (integer powers), sin, cos, exp, sqrt, pi and parentheses; "
+      "2 pi-periodic in each coordinate. Differentiated symbolically and compiled for OpenCL and CUDA "
+      "(docs/models.md).");
+  add("model.parameters", "table", "{ name = float, ... }", "a table of names and finite floats, e.g. { eps = 0.01 }",
+      [](const Scene& s) {
+        if (s.model_parameters.empty()) return std::string();
+        std::string t = "{ ";
+        for (std::size_t i = 0; i < s.model_parameters.size(); ++i)
+          t += (i ? ", " : "") + s.model_parameters[i].first + " = " + toml_double(s.model_parameters[i].second);
+        return t + " }";
+      },
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        const toml::table* t = n.as_table();
+        if (!t) return r.bad(key, n, false);
+        std::vector<std::pair<std::string, double>> v;
+        for (auto&& [name, value] : *t) {
+          double x = 0;
+          if (auto f = value.as_floating_point()) x = f->get();
+          else if (auto i = value.as_integer()) x = static_cast<double>(i->get());
+          else return r.bad(key, n, true, " (" + std::string(name.str()) + " is not a number)");
+          if (!std::isfinite(x)) return r.bad(key, n, true, " (" + std::string(name.str()) + " is not finite)");
+          v.emplace_back(std::string(name.str()), x);
+        }
+        s.model_parameters = v;
+      },
+      "For model.kind = \"expression\": the named parameters of model.potential, e.g. { eps = 0.01 } "
+      "(names: letters, digits and _, not x, y, z, pi or a function name).");
+}
+
 void model_keys(Rows& add) {
   add("model.energy", "float", "> -2 and <= 1e6",
       "a float greater than -2 and at most 1e6 (for E <= -2 no phase space is accessible)", real_of(&Scene::energy),
       real_into(&Scene::energy, [](double e) { return e > kMinEnergy && e <= kMaxEnergy; }),
       "Total energy E of every trajectory; the effective perturbation is 2/E.");
+  model_kind_keys(add);
+  expression_model_keys(add);
 }
 
 void ensemble_keys(Rows& add) {
@@ -157,7 +304,7 @@ void ensemble_keys(Rows& add) {
       "How initial states are drawn; X is uniform on the accessible part of the torus. "
       "\"shell\": direction of P uniform on the sphere, speed sqrt(2 (E - V(X))). \"cap\", "
       "\"box\": direction uniform in ensemble.cap or ensemble.box. \"gaussian\": see "
-      "ensemble.gaussian.");
+      "ensemble.gaussian. \"grid\": the points of ensemble.grid, in order.");
   add("ensemble.chunk", "integer", ">= 0 (0 = automatic)", "an integer >= 0 (0 = automatic)",
       integer_of(&Scene::chunk), integer_into(&Scene::chunk, at_least_0),
       "Trajectories per kernel launch; 0 lets the runner choose. Does not change the results.");
@@ -245,6 +392,28 @@ void run_keys(Rows& add) {
       [](Reader& r, const std::string& key, const toml::node& n, Scene& s) { r.text(key, n, s.device, valid_device); },
       "Where to run. \"auto\" picks the default device; whether the device exists is checked "
       "when the run starts.");
+  // run.checkpoint_every (checkpoints, issue 15): "auto", "off", seconds or "<number> <unit>"
+  add("run.checkpoint_every", "float or string", "\"auto\", \"off\", seconds > 0, or \"N s\", \"N min\", \"N h\"",
+      "\"auto\", \"off\", a number of seconds greater than 0, or a string such as \"10 min\" "
+      "(units s, min, h)",
+      [](const Scene& s) {
+        return s.checkpoint_every < 0 ? toml_string("auto")
+               : s.checkpoint_every == 0 ? toml_string("off")
+                                         : toml_double(s.checkpoint_every);
+      },
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        if (n.as_string()) {
+          std::string word;
+          if (r.text(key, n, word, [](const std::string& w) { return wall_seconds(w) != 0.5; }, {"auto", "off"}))
+            s.checkpoint_every = wall_seconds(word);
+          return;
+        }
+        r.real(key, n, s.checkpoint_every, positive);
+      },
+      "Wall-clock time between checkpoints of the run, written into its staging directory "
+      "(`arnoldweb resume` continues from the last; docs/cluster.md). \"auto\": every 10 min "
+      "once a run is estimated to take more than an hour; \"off\": none, and a stopped run "
+      "writes what it computed instead.");
 }
 
 void observe_keys(Rows& add) {
@@ -348,6 +517,79 @@ void output_keys(Rows& add) {
       bool_into(&Scene::images), "Write images of the maps.");
 }
 
+// Chaos indicators and grids of initial conditions (docs/indicators.md).
+void indicator_keys(Rows& add) {
+  const auto whole = [](double v) { return v >= 1 && v <= 65536 && v == static_cast<double>(static_cast<long>(v)); };
+  add("ensemble.grid", "table", "{ kind, nside, resolution, range1, range2, axes, fixed, position }",
+      "a table { kind = ..., nside = N, resolution = [n1, n2], range1 = [a, b], range2 = [a, b], axes = [i, j], "
+      "fixed = p, position = [x, y, z] }",
+      [](const Scene& s) {
+        return "{ kind = " + toml_string(s.grid_kind) + ", nside = " + std::to_string(s.grid_nside) +
+               ", resolution = " + pair(s.grid_resolution) + ", range1 = " + pair(s.grid_range1) +
+               ", range2 = " + pair(s.grid_range2) + ", axes = " + pair(s.grid_axes) +
+               ", fixed = " + toml_double(s.grid_fixed) + ", position = " + list(s.grid_position) + " }";
+      },
+      table_only(),
+      "The grid of initial conditions for ensemble.initial = \"grid\": trajectory i is grid point i "
+      "(ensemble.trajectories is the number of points); docs/indicators.md gives the ordering.",
+      Shape::Composite);
+  add("ensemble.grid.kind", "string", "\"healpix\", \"lonlat\" or \"plane\"",
+      "one of \"healpix\", \"lonlat\", \"plane\"", text_of(&Scene::grid_kind),
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        r.choice(key, n, s.grid_kind, {"healpix", "lonlat", "plane"});
+      },
+      "\"healpix\": momentum directions at the HEALPix pixel centres (RING order) of ensemble.grid.nside; "
+      "\"lonlat\": directions at the cell centres of a resolution[0] x resolution[1] grid over ensemble.box "
+      "(uniform in longitude and latitude); the speed from the energy at the fixed position. \"plane\": momenta "
+      "axes[0], axes[1] on a grid over range1 x range2, the third momentum = fixed.");
+  add("ensemble.grid.nside", "integer", "power of two, 1 to 1024", "a power of two from 1 to 1024",
+      integer_of(&Scene::grid_nside),
+      integer_into(&Scene::grid_nside, [](std::int64_t v) { return v <= 1024 && is_power_of_two(v); }),
+      "HEALPix resolution of a \"healpix\" grid: 12 nside^2 initial conditions.");
+  add("ensemble.grid.resolution", "array of 2 integers", "1 to 65536 each", "an array [n1, n2] of integers from 1 to 65536",
+      pair_of(&Scene::grid_resolution),
+      pair_into(&Scene::grid_resolution, [whole](double a, double b) { return whole(a) && whole(b); }),
+      "Points along the two gridded coordinates of a \"lonlat\" or \"plane\" grid (n1 x n2 initial conditions).");
+  add("ensemble.grid.range1", "array of 2 floats", "[from, to], from < to", "an array [from, to] with from < to",
+      pair_of(&Scene::grid_range1), pair_into(&Scene::grid_range1, [](double a, double b) { return a < b; }),
+      "Range of the first gridded momentum of a \"plane\" grid.");
+  add("ensemble.grid.range2", "array of 2 floats", "[from, to], from < to", "an array [from, to] with from < to",
+      pair_of(&Scene::grid_range2), pair_into(&Scene::grid_range2, [](double a, double b) { return a < b; }),
+      "Range of the second gridded momentum of a \"plane\" grid.");
+  add("ensemble.grid.axes", "array of 2 integers", "two different of 0, 1, 2", "an array [i, j] of two different integers 0, 1 or 2",
+      pair_of(&Scene::grid_axes), pair_into(&Scene::grid_axes, [](double a, double b) {
+        auto axis = [](double v) { return v == 0 || v == 1 || v == 2; };
+        return axis(a) && axis(b) && a != b;
+      }),
+      "Which momenta a \"plane\" grid sets (0 = p_1/p_x, 1 = p_2/p_y, 2 = p_3/p_z); the third is ensemble.grid.fixed.");
+  add("ensemble.grid.fixed", "float", "finite", "a finite float", real_of(&Scene::grid_fixed),
+      real_into(&Scene::grid_fixed, [](double) { return true; }), "The momentum a \"plane\" grid does not set.");
+  add("ensemble.grid.position", "array of 3 floats", "finite, radians", "an array [x, y, z] of 3 finite floats (radians)",
+      [](const Scene& s) { return list(s.grid_position); },
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        r.reals(key, n, s.grid_position, 3, [](const std::vector<double>&) { return true; });
+      },
+      "The position X (angles, radians) of every grid point.");
+  add("observe.fli", "boolean", "true or false", "true or false", bool_of(&Scene::fli), bool_into(&Scene::fli),
+      "Fast Lyapunov indicator of every trajectory: max over the run of the log of the norm of the tangent vector w (norm 1 at the start).");
+  add("observe.megno", "boolean", "true or false", "true or false", bool_of(&Scene::megno), bool_into(&Scene::megno),
+      "Mean MEGNO <Y> of every trajectory (2 on regular orbits, growing as lambda t / 2 on chaotic ones) and the "
+      "Lyapunov exponent from its slope.");
+  add("observe.lyapunov", "boolean", "true or false", "true or false", bool_of(&Scene::lyapunov),
+      bool_into(&Scene::lyapunov), "Finite-time maximal Lyapunov exponent, log(norm of w(t)) / t, of every trajectory, in 1/T.");
+  add("observe.tangent_initial", "array of 6 floats", "not all zero", "an array of 6 finite floats, not all zero",
+      [](const Scene& s) { return list(s.tangent_initial); },
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        r.reals(key, n, s.tangent_initial, 6, [](const std::vector<double>& v) {
+          for (double x : v)
+            if (x != 0) return true;
+          return false;
+        });
+      },
+      "Initial tangent vector (dX in radians, dP) of the indicators, normalised to 1. The default has no symmetry "
+      "between coordinates (a symmetric one stays in symmetric planes and hides resonances such as I1 = I2).");
+}
+
 // [[panel]] tables are read as a whole (panels.cpp); these rows document them.
 void panel_keys(Rows& add) {
   const Literal none = [](const Scene&) { return std::string(); };
@@ -367,6 +609,7 @@ std::vector<KeySpec> build() {
   integrator_keys(rows);
   run_keys(rows);
   observe_keys(rows);
+  indicator_keys(rows);
   output_keys(rows);
   panel_keys(rows);
   return k;

@@ -69,6 +69,11 @@ class CpuDevice final : public ComputeDevice {
   void compile(const KernelConfig& k) override {
     const bool fl = k.precision == Precision::Float;
     const bool native = k.math == MathMode::Native;
+    if (!k.model_source.empty())  // docs/models.md, "Expression models": why the cpu backend does not
+      throw DeviceError(info_.id, "", 0,
+                        "the cpu backend runs the built-in models only (its kernels are compiled ahead of "
+                        "time); run model.kind = \"expression\" on an OpenCL device such as PoCL "
+                        "(--device opencl:0; `arnoldweb devices` lists them) or on cuda:N");
     kernel_ = cpu_kernel(k.model, fl, native);
     if (!kernel_)
       throw DeviceError(info_.id, "", 0, "this build has no cpu kernel for model " + std::to_string(k.model));
@@ -112,6 +117,7 @@ class CpuDevice final : public ComputeDevice {
     c.initial_r = ptr<void>(b.initial_r);
     c.final_r = ptr<void>(b.final_r);
     c.final_i = ptr<std::int64_t>(b.final_i);
+    c.indicators = ptr<void>(b.indicators);
     c.group_stats = ptr<void>(b.group_stats);
     kernel_(c);
   }

@@ -25,6 +25,7 @@ struct CpuChunk {
   void* initial_r = nullptr;         // reals of the variant's precision
   void* final_r = nullptr;
   std::int64_t* final_i = nullptr;
+  void* indicators = nullptr;        // AW_IND_REALS reals per trajectory (chaos indicators)
   void* group_stats = nullptr;       // 2 reals of the variant's precision per block
 };
 

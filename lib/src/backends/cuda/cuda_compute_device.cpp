@@ -69,6 +69,7 @@ class CudaDevice final : public ComputeDevice {
     select();
     real_size_ = config.precision == Precision::Float ? sizeof(float) : sizeof(double);
     defines_ = config.defines();
+    model_source_ = config.model_source;
     target_ = nvrtc_target(cc_, label());
     load();
   }
@@ -116,8 +117,10 @@ class CudaDevice final : public ComputeDevice {
     void* initial = dptr(b.initial_r);
     void* final_r = dptr(b.final_r);
     void* final_i = dptr(b.final_i);
+    void* indicators = dptr(b.indicators);
     void* stats = dptr(b.group_stats);
-    void* args[] = {&chunk_first, &chunk_end, &rp, &ip, &map, &counters, &initial, &final_r, &final_i, &stats};
+    void* args[] = {&chunk_first, &chunk_end, &rp, &ip, &map, &counters, &initial, &final_r, &final_i, &indicators,
+                    &stats};
     cuda_check(cudaLaunchKernel(reinterpret_cast<const void*>(ensemble_), dim3(static_cast<unsigned>(s.groups)),
                                 dim3(block_), args, 2 * block_ * real_size_, stream_.get()),
                info_.id, "cudaLaunchKernel",
@@ -156,11 +159,11 @@ class CudaDevice final : public ComputeDevice {
     ensemble_ = nullptr;
     fold_ = nullptr;
     library_.reset();
-    CachedImage img = cuda_ensemble_image(defines_, target_, label());
+    CachedImage img = cuda_ensemble_image(defines_, target_, label(), model_source_);
     cudaError_t e = try_load(*img.image);
     if (e != cudaSuccess && img.origin != "compiled") {
-      cuda_forget_image(defines_, target_);
-      img = cuda_ensemble_image(defines_, target_, label());
+      cuda_forget_image(defines_, target_, model_source_);
+      img = cuda_ensemble_image(defines_, target_, label(), model_source_);
       e = try_load(*img.image);
     }
     if (e != cudaSuccess) {
@@ -225,6 +228,7 @@ class CudaDevice final : public ComputeDevice {
   cudaKernel_t ensemble_ = nullptr, fold_ = nullptr;
   CudaTarget target_;
   std::string defines_, options_, jit_log_;
+  std::string model_source_;  // an expression model's header, or empty
   std::size_t real_size_ = 8;
   unsigned block_ = kBlock;
   int blocks_per_sm_ = 4;

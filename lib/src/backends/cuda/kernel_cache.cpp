@@ -32,9 +32,10 @@ std::map<std::string, std::shared_ptr<const CudaImage>>& memory_cache() {
   return m;
 }
 
-std::string key_of(const std::string& defines, const CudaTarget& target) {
+std::string key_of(const std::string& defines, const CudaTarget& target, const std::string& model_source) {
   std::string k;
   for (const auto& o : nvrtc_options(defines, target)) k += o + '\n';
+  if (!model_source.empty()) k += "expression model\n" + model_source;  // hashed into the file name
   return k;
 }
 
@@ -131,9 +132,9 @@ std::string cuda_cache_dir() {
 }
 
 CachedImage cuda_ensemble_image(const std::string& defines, const CudaTarget& target,
-                                const std::string& device) {
+                                const std::string& device, const std::string& model_source) {
   std::lock_guard<std::mutex> lock(cache_mutex);
-  const std::string key = key_of(defines, target);
+  const std::string key = key_of(defines, target, model_source);
   auto& mem = memory_cache();
   if (auto it = mem.find(key); it != mem.end()) return {it->second, "memory"};
 
@@ -156,7 +157,7 @@ CachedImage cuda_ensemble_image(const std::string& defines, const CudaTarget& ta
     }
   }
 
-  auto img = std::make_shared<const CudaImage>(nvrtc_compile_ensemble(defines, target, device));
+  auto img = std::make_shared<const CudaImage>(nvrtc_compile_ensemble(defines, target, device, model_source));
   mem[key] = img;
   if (!file.empty()) write_disk(file, img->data);
   return {img, "compiled"};
@@ -167,9 +168,9 @@ void cuda_clear_memory_cache() {
   memory_cache().clear();
 }
 
-void cuda_forget_image(const std::string& defines, const CudaTarget& target) {
+void cuda_forget_image(const std::string& defines, const CudaTarget& target, const std::string& model_source) {
   std::lock_guard<std::mutex> lock(cache_mutex);
-  const std::string key = key_of(defines, target);
+  const std::string key = key_of(defines, target, model_source);
   memory_cache().erase(key);
   const std::string dir = cuda_cache_dir();
   if (dir.empty()) return;

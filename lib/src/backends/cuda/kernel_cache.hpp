@@ -21,12 +21,13 @@ struct CachedImage {
 
 // The ensemble kernel image for (defines, target); compiles it with NVRTC
 // when neither cache has it. Throws what nvrtc_compile_ensemble throws.
+// `model_source`: an expression model's header (part of the key), or "".
 CachedImage cuda_ensemble_image(const std::string& defines, const CudaTarget& target,
-                                const std::string& device);
+                                const std::string& device, const std::string& model_source = "");
 
 // Removes the image for (defines, target) from both caches (used when a
 // cached image fails to load, before compiling it afresh).
-void cuda_forget_image(const std::string& defines, const CudaTarget& target);
+void cuda_forget_image(const std::string& defines, const CudaTarget& target, const std::string& model_source = "");
 
 // Empties this process's in-memory cache (the disk cache stays). For tests.
 void cuda_clear_memory_cache();

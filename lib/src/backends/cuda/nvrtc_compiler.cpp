@@ -137,7 +137,7 @@ std::string nvrtc_option_line(const std::string& defines, const CudaTarget& targ
 }
 
 CudaImage nvrtc_compile_ensemble(const std::string& defines, const CudaTarget& target,
-                                 const std::string& device) {
+                                 const std::string& device, const std::string& model_source) {
   const std::vector<std::string> opts = nvrtc_options(defines, target);
   std::vector<const char*> argv;
   for (const auto& o : opts) argv.push_back(o.c_str());
@@ -146,7 +146,19 @@ CudaImage nvrtc_compile_ensemble(const std::string& defines, const CudaTarget& t
   img.options = join(opts);
 
   static const std::string source(embedded_file("ensemble.cu"));
-  const HeaderSet& h = headers();
+  const HeaderSet* set = &headers();
+  HeaderSet with_model;  // the embedded headers and an expression model's
+  if (!model_source.empty()) {
+    with_model.files.emplace_back(expression_model_header(), model_source);
+    with_model.names.clear();
+    with_model.texts.clear();
+    for (const auto& [name, text] : with_model.files) {
+      with_model.names.push_back(name.c_str());
+      with_model.texts.push_back(text.c_str());
+    }
+    set = &with_model;
+  }
+  const HeaderSet& h = *set;
   Program prog;
   nvrtc_check(nvrtcCreateProgram(&prog.p, source.c_str(), "ensemble.cu",
                                  static_cast<int>(h.names.size()), h.texts.data(), h.names.data()),

@@ -46,8 +46,9 @@ std::string nvrtc_option_line(const std::string& defines, const CudaTarget& targ
 // Compiles the ensemble kernels (aw_ensemble, aw_fold) for `target`. No
 // caching (kernel_cache.hpp caches). Throws BuildError with NVRTC's full log
 // and the options when the source does not compile, DeviceError (call,
-// status) when NVRTC itself fails. `device` labels the errors.
+// status) when NVRTC itself fails. `device` labels the errors. A non-empty
+// `model_source` is an expression model's header (models/aw_expression.h).
 CudaImage nvrtc_compile_ensemble(const std::string& defines, const CudaTarget& target,
-                                 const std::string& device);
+                                 const std::string& device, const std::string& model_source = "");
 
 }  // namespace arnoldweb::detail

@@ -60,6 +60,12 @@ const std::string& ensemble_source() {
   return src;
 }
 
+// The program's source: the embedded one, or with an expression model's header.
+std::string ensemble_source(const KernelConfig& config) {
+  if (config.model_source.empty()) return ensemble_source();
+  return flatten_source("ensemble.cl", {{expression_model_header(), config.model_source}});
+}
+
 std::mutex build_mutex;  // program_cache is not thread-safe
 
 class ClMemory final : public DeviceMemory {
@@ -98,6 +104,7 @@ class OpenclDevice final : public ComputeDevice {
       throw DeviceError(info_.id, "", 0, "ARNOLDWEB_OPENCL_LANES must be 1, 2, 4, 8 or 16");
     real_size_ = fl ? sizeof(float) : sizeof(double);
     options_ = config.defines() + " -DAW_LANES=" + std::to_string(lanes_);
+    source_ = ensemble_source(config);
     if (fl && (device_.get_info<cl_device_fp_config>(CL_DEVICE_SINGLE_FP_CONFIG) & CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT))
       options_ += " -cl-fp32-correctly-rounded-divide-sqrt";
     // extra compiler options, for experiments and diagnostics (like ARNOLDWEB_NVRTC_OPTIONS)
@@ -162,8 +169,9 @@ class OpenclDevice final : public ComputeDevice {
       k.set_arg(6, arg(b.initial_r));
       k.set_arg(7, arg(b.final_r));
       k.set_arg(8, arg(b.final_i));
-      k.set_arg(9, arg(b.group_stats));
-      k.set_arg(10, 2 * wg_ * real_size_, nullptr);
+      k.set_arg(9, arg(b.indicators));
+      k.set_arg(10, arg(b.group_stats));
+      k.set_arg(11, 2 * wg_ * real_size_, nullptr);
       queue_.enqueue_1d_range_kernel(k, 0, s.items, wg_);
     } catch (const compute::opencl_error& e) {
       rethrow(info_, "clEnqueueNDRangeKernel", e);
@@ -197,14 +205,14 @@ class OpenclDevice final : public ComputeDevice {
   void build() {
     std::lock_guard<std::mutex> lock(build_mutex);
     auto cache = compute::program_cache::get_global_cache(context_);
-    const std::string key = "arnoldweb.ensemble." + std::to_string(std::hash<std::string>()(ensemble_source()));
+    const std::string key = "arnoldweb.ensemble." + std::to_string(std::hash<std::string>()(source_));
     auto cached = cache->get(key, options_);
     compute::program program;
     if (cached) {
       program = *cached;
     } else {
       try {
-        program = compute::program::create_with_source(ensemble_source(), context_);
+        program = compute::program::create_with_source(source_, context_);
       } catch (const compute::opencl_error& e) {
         rethrow(info_, "clCreateProgramWithSource", e);
       }
@@ -236,6 +244,7 @@ class OpenclDevice final : public ComputeDevice {
   compute::kernel ensemble_, fold_;
   compute::buffer dummy_;
   std::string options_;
+  std::string source_;  // the program text (ensemble.cl flattened, with an expression model's header)
   std::size_t real_size_ = 8;
   int lanes_ = 1;
   std::size_t wg_ = 1;
