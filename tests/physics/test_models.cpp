@@ -109,7 +109,9 @@ TEST_SUITE("models") {
   TEST_CASE("every model: force = -grad V and the Hessian = d^2V (finite differences), the same force from both") {
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> uni(-0.5, 0.5);
-    for (const auto& [m, rp] : cases()) {
+    for (const auto& model_case : cases()) {
+      const auto& m = model_case.first;  // (not a structured binding: clang 14 cannot capture those)
+      const auto& rp = model_case.second;
       CAPTURE(m.name);
       double worst_f = 0, worst_h = 0;
       for (int t = 0; t < 200; ++t) {
@@ -174,7 +176,9 @@ TEST_SUITE("models") {
   TEST_CASE("the general kinetic form: the speed puts the state on T(s n) = ke at the first crossing, or says none") {
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> uni(-1.0, 1.0);
-    for (const auto& [m, rp] : cases()) {
+    for (const auto& model_case : cases()) {
+      const auto& m = model_case.first;  // (not a structured binding: clang 14 cannot capture those)
+      const auto& rp = model_case.second;
       CAPTURE(m.name);
       double diag[3];
       m.kinetic_diag(&rp, diag);
