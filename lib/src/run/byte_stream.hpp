@@ -71,6 +71,7 @@ class ByteReader {
   }
   void raw(void* p, std::size_t n) {
     need(n);
+    if (n == 0) return;  // an empty vector's data() may be null: memcpy must not see it
     std::memcpy(p, in_.data() + at_, n);
     at_ += n;
   }
