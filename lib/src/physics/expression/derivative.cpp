@@ -23,37 +23,72 @@ int Differentiator::d(int id, int i) {
       r = g_.constant(1);  // only x_i itself reaches here
       break;
     case Op::Add:
-      r = g_.add(d(n.a, i), d(n.b, i));
+    {  // operands in named steps, left first: the node order (and so the emitted
+       // code) must not depend on the compiler's order of evaluating arguments
+      const int da = d(n.a, i), db = d(n.b, i);
+      r = g_.add(da, db);
       break;
+    }
     case Op::Sub:
-      r = g_.sub(d(n.a, i), d(n.b, i));
+    {
+      const int da = d(n.a, i), db = d(n.b, i);
+      r = g_.sub(da, db);
       break;
+    }
     case Op::Neg:
       r = g_.neg(d(n.a, i));
       break;
     case Op::Mul:
-      r = g_.add(g_.mul(d(n.a, i), n.b), g_.mul(n.a, d(n.b, i)));
+    {
+      const int da = d(n.a, i);
+      const int left = g_.mul(da, n.b);
+      const int db = d(n.b, i);
+      const int right = g_.mul(n.a, db);
+      r = g_.add(left, right);
       break;
+    }
     case Op::Div: {
       const int da = d(n.a, i), db = d(n.b, i);
-      r = g_.sub(g_.div(da, n.b), g_.div(g_.mul(n.a, db), g_.mul(n.b, n.b)));
+      const int left = g_.div(da, n.b);
+      const int num = g_.mul(n.a, db);
+      const int den = g_.mul(n.b, n.b);
+      const int right = g_.div(num, den);
+      r = g_.sub(left, right);
       break;
     }
     case Op::Pow:
-      r = g_.mul(g_.mul(g_.constant(n.k), g_.pow(n.a, n.k - 1)), d(n.a, i));
+    {
+      const int k = g_.constant(n.k);
+      const int power = g_.pow(n.a, n.k - 1);
+      const int outer = g_.mul(k, power);
+      const int da = d(n.a, i);
+      r = g_.mul(outer, da);
       break;
+    }
     case Op::Sin:
-      r = g_.mul(g_.cos(n.a), d(n.a, i));
+    {
+      const int c = g_.cos(n.a);
+      const int da = d(n.a, i);
+      r = g_.mul(c, da);
       break;
+    }
     case Op::Cos:
-      r = g_.neg(g_.mul(g_.sin(n.a), d(n.a, i)));
+    {
+      const int sn = g_.sin(n.a);
+      const int da = d(n.a, i);
+      r = g_.neg(g_.mul(sn, da));
       break;
+    }
     case Op::Exp:
       r = g_.mul(id, d(n.a, i));
       break;
     case Op::Sqrt:
-      r = g_.div(d(n.a, i), g_.mul(g_.constant(2), id));
+    {
+      const int da = d(n.a, i);
+      const int two = g_.constant(2);
+      r = g_.div(da, g_.mul(two, id));
       break;
+    }
     default:
       throw ExpressionError(0, "internal: cannot differentiate the lowered form");
   }

@@ -25,20 +25,32 @@ class Lowering {
         r = to_.param(n.k);
         break;
       case Op::Var:
-        r = to_.mul(to_.constant(kTwoPi), to_.u(n.k));
+      {  // operands in named steps, left first: the node order (and so the
+         // emitted code) must not depend on the compiler's argument order
+        const int two_pi = to_.constant(kTwoPi);
+        r = to_.mul(two_pi, to_.u(n.k));
         break;
-      case Op::Add:
-        r = to_.add(lower(n.a), lower(n.b));
+      }
+      case Op::Add: {
+        const int a = lower(n.a), b = lower(n.b);
+        r = to_.add(a, b);
         break;
-      case Op::Sub:
-        r = to_.sub(lower(n.a), lower(n.b));
+      }
+      case Op::Sub: {
+        const int a = lower(n.a), b = lower(n.b);
+        r = to_.sub(a, b);
         break;
-      case Op::Mul:
-        r = to_.mul(lower(n.a), lower(n.b));
+      }
+      case Op::Mul: {
+        const int a = lower(n.a), b = lower(n.b);
+        r = to_.mul(a, b);
         break;
-      case Op::Div:
-        r = to_.div(lower(n.a), lower(n.b));
+      }
+      case Op::Div: {
+        const int a = lower(n.a), b = lower(n.b);
+        r = to_.div(a, b);
         break;
+      }
       case Op::Neg:
         r = to_.neg(lower(n.a));
         break;
@@ -132,10 +144,14 @@ class Lowering {
       int t = -1;
       for (std::size_t i = 0; i < 3; ++i)
         if (l->coef[i] >= 0) t = plus(t, to_.mul(l->coef[i], to_.u(static_cast<int>(i))));
-      if (l->rest >= 0) t = plus(t, to_.mul(to_.constant(kInvTwoPi), l->rest));
+      if (l->rest >= 0) {
+        const int inv_two_pi = to_.constant(kInvTwoPi);
+        t = plus(t, to_.mul(inv_two_pi, l->rest));
+      }
       return t < 0 ? to_.constant(0) : t;
     }
-    return to_.mul(to_.constant(kInvTwoPi), lower(arg));
+    const int inv_two_pi = to_.constant(kInvTwoPi);
+    return to_.mul(inv_two_pi, lower(arg));
   }
 
   const Graph& from_;
