@@ -75,6 +75,12 @@ const char* kFramesSets[] = {"--set", "observe.frames.times=[0,1,2]", "--set", "
 
 TEST_SUITE("reliability") {
   TEST_CASE("1. a movie into directories named like shell commands runs no command") {
+#ifndef ARNOLDWEB_HAVE_CAIRO
+    // frames (and so the movie) are drawn with cairo
+    // (the rest of the suite runs: this case alone reports itself skipped)
+    MESSAGE("SKIPPED: this build has no cairo, so it writes no frames and no movie");
+    return;
+#endif
     // a stand-in ffmpeg on PATH records the arguments it is given and writes
     // the output file: with a shell in between, the names below would run
     // `touch INJECTED` before any ffmpeg is reached
