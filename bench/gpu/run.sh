@@ -106,7 +106,7 @@ if [ -n "$CUDA0" ]; then
   for mb in 4 6 8; do
     ARNOLDWEB_NVRTC_OPTIONS="-DAW_CUDA_MIN_BLOCKS=$mb" timeout $(left 40) $B --devices "$CUDA0" --sizes 4194304 \
       --steps 2000 --precision double,float --variants default --no-baselines --repeat 3 --no-plot \
-      --out "$BW/minblocks$mb" 2>&1 | grep -E "^\| cuda" | sed "s/^/min_blocks=$mb /"
+      --out "$BW/minblocks$mb" 2>&1 | grep -E "^\| cuda" | sort -u | sed "s/^/min_blocks=$mb /"
   done
 fi
 if [ -n "$CUDA0" ] && command -v ncu >/dev/null; then
@@ -141,7 +141,7 @@ sed -n '/Cost of effects/,$p' "$BW/effects.log" | grep -vE "^\|---"
 if [ -n "$CUDA0" ]; then
   stamp "models: throughput of each model on $CUDA0 (4.2e6 trajectories x 2000 steps, double; docs/models.md)"
   OCL_GPU=$(echo "$GPUS" | tr , '\n' | grep '^opencl' | head -1)
-  for spec in "seibert2011|" "fgl|--set model.kind=fgl --set model.epsilon=0.01 --set model.energy=1" \
+  for spec in "seibert2011|" "fgl|--set model.kind=fgl --set model.epsilon=0.01 --set model.energy=1 --set integrator.step=0.002" \
               "fourier|--set model.kind=fourier --set model.harmonics=[[1,1,0,0.5,0],[1,-1,0,0.5,0],[1,1,2,0.25,0],[1,1,-2,0.25,0],[1,-1,2,0.25,0],[1,-1,-2,0.25,0]]" \
               "expression|--set model.kind=expression --set model.potential=cos(x)*cos(y)*(1+cos(2*z))"; do
     IFS='|' read -r name extra <<<"$spec"
