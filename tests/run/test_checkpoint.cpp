@@ -130,6 +130,12 @@ TEST_SUITE("checkpoint") {
     CHECK(contains(text, "damaged"));
     std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
 
+    // what a process killed while writing left half-written in the checkpoint's directory
+    // (an output or a checkpoint temporary) does not reach the results
+    const std::string staging = arnoldweb::find_checkpoints(out).front().staging_dir;
+    std::ofstream(staging + "/.map.h5.tmp-999999-0") << "half an HDF5 file";
+    std::ofstream(staging + "/.checkpoint.awck.tmp-999999-3") << "half a checkpoint";
+
     // resumed on another device where there is one (PoCL), else on the cpu backend
     std::string device = "cpu";
     for (const auto& d : arnoldweb::list_devices())
@@ -139,6 +145,11 @@ TEST_SUITE("checkpoint") {
     CAPTURE(text);
     check_same_digests(root + "/plain", out);
     CHECK(checkpoints_beside(out).empty());
+    CHECK_FALSE(fs::exists(out + "/.map.h5.tmp-999999-0"));
+    CHECK_FALSE(fs::exists(out + "/.checkpoint.awck.tmp-999999-3"));
+    std::size_t files = 0;
+    for (const auto& e : fs::recursive_directory_iterator(out)) files += e.is_regular_file();
+    CHECK(files == summary_of(out)["files"].size() + 1);
     // the directory is an ordinary arnoldweb output: --force may replace it
     CHECK(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", out, "--force", "--set",
                            "run.checkpoint_every=\"off\""}) == 0);

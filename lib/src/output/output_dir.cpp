@@ -318,6 +318,34 @@ Staging::Staging(const std::string& final_dir, const OutputOptions& options) : o
   }
 }
 
+namespace {
+
+// ".NAME.tmp-PID-N": a file that write_file_atomically had not finished
+bool is_temporary_of(const std::string& name, long pid) {
+  const auto at = name.rfind(".tmp-");
+  if (name.empty() || name[0] != '.' || at == std::string::npos || at == 0) return false;
+  const std::string tail = name.substr(at + 5);
+  const auto dash = tail.find('-');
+  if (dash == std::string::npos || dash == 0 || dash + 1 == tail.size()) return false;
+  const std::string p = tail.substr(0, dash), n = tail.substr(dash + 1);
+  auto digits = [](const std::string& t) { return t.find_first_not_of("0123456789") == std::string::npos; };
+  if (!digits(p) || !digits(n)) return false;
+  return pid < 0 || std::to_string(pid) != p;
+}
+
+}  // namespace
+
+// The half-written temporaries of other (killed) processes in a staging
+// directory that a resumed run took over: checkpoints, or outputs that were
+// being written when the process died. The directory is arnoldweb's own
+// (its marker, its checkpoint), so nothing of a user's is touched.
+void remove_dead_temporaries(const std::string& staging) {
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(staging, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file(ec) && is_temporary_of(it->path().filename().string(), ::getpid()))
+      ::unlink(it->path().c_str());
+}
+
 Staging::~Staging() {
   if (done_ || adopted_) return;
   std::error_code ec;
@@ -341,12 +369,7 @@ std::string Staging::keep(const std::string& suffix) {
 std::string Staging::commit() {
   const fs::path dir(final_);
   ::unlink((fs::path(path_) / kCheckpointFile).c_str());  // consumed: the outputs are complete
-  {  // and the temporaries of checkpoints that a killed process left half-written
-    const std::string tmp = std::string(".") + kCheckpointFile + ".tmp-";
-    std::error_code ec;
-    for (fs::directory_iterator it(path_, ec), end; !ec && it != end; it.increment(ec))
-      if (it->path().filename().string().compare(0, tmp.size(), tmp) == 0) ::unlink(it->path().c_str());
-  }
+  remove_dead_temporaries(path_);
   ::unlink((fs::path(path_) / kMarker).c_str());
   done_ = true;
   struct stat st {};

@@ -41,6 +41,10 @@ std::string why_not_replaceable(const std::string& dir, const std::string& scene
 // names arnoldweb writes).
 std::vector<std::string> written_files(const std::string& dir);
 
+// Removes, in a staging directory this process owns, the files that other
+// (dead) processes' atomic writes left half-written (".NAME.tmp-PID-N").
+void remove_dead_temporaries(const std::string& staging);
+
 // A staging directory for the outputs of one run: created beside the final
 // directory with a marker file; commit() moves it into place. If it is
 // neither committed nor kept, the destructor removes it.
