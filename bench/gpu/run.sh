@@ -14,6 +14,9 @@
 # PoCL, NVIDIA OpenCL, CUDA), the four-backend parity check (portable math at
 # full size: 10^5 trajectories x 10^4 steps; native-math drift), a short
 # throughput benchmark per device, and prints one table last.
+# recheck: build, the GPU-relevant suites (parity, order and expressions on
+# CUDA and NVIDIA OpenCL, models, indicators, outputs, reliability, checkpoints),
+# the quick parity check and the small-N rate (bench/gpu/small_n.sh); no benchmark.
 # Needs .device-deps/ (see docs/gpu.md): Debian packages the image lacks and
 # ../shared/gpu/device-setup.sh. Results go to $OUT (default ./gpu-out).
 set -uo pipefail
@@ -46,12 +49,14 @@ ctest_rc=-; parity_rc=-
 if [ "$mode" != bench ]; then
 stamp "tests"
 export ARNOLDWEB_LONG_TESTS=1   # the long hard cases run here, not in CI
-ctest --test-dir build-gpu --output-on-failure -j4 --timeout 900 -E "^python$" >"$OUT/ctest.txt" 2>&1  # python: PyPI is out of reach there
+ctest_sel=(-E "^python$")
+[ "$mode" = recheck ] && ctest_sel=(-R "^(parity\.cuda|parity\.opencl|order\.cuda|expression\.opencl|nvrtc|models|indicators|output|reliability|checkpoint|scale)$")
+ctest --test-dir build-gpu --output-on-failure -j4 --timeout 900 "${ctest_sel[@]}" >"$OUT/ctest.txt" 2>&1  # python: PyPI is out of reach there
 ctest_rc=$?
 grep -E "Test +#|tests passed|tests failed" "$OUT/ctest.txt"
 
 stamp "parity (portable, full size)"
-if [ "$mode" = quick ]; then n=20000; s=2000; else n=100000; s=10000; fi
+if [ "$mode" = quick ] || [ "$mode" = recheck ]; then n=20000; s=2000; else n=100000; s=10000; fi
 build-gpu/arnoldweb_parity --trajectories $n --steps $s --csv "$OUT/parity.csv" >"$OUT/parity.md" 2>&1
 parity_rc=$?
 cat "$OUT/parity.md"
@@ -59,7 +64,7 @@ stamp "native-math drift"
 build-gpu/arnoldweb_parity --trajectories 20000 --steps $s --native >"$OUT/parity_native.md" 2>&1
 grep native "$OUT/parity_native.md"
 
-if [ "$mode" != verify ]; then
+if [ "$mode" != verify ] && [ "$mode" != recheck ]; then
 stamp "throughput (default scene, E = 15, yoshida6a)"
 echo "device,precision,trajectories,seconds,trajectory_steps_per_s" >"$OUT/throughput.csv"
 for id in $(build-gpu/arnoldweb devices --json | python3 -c 'import json,sys; print(" ".join(d["id"] for d in json.load(sys.stdin)))'); do
@@ -80,7 +85,13 @@ cat "$OUT/throughput.csv"
 fi
 
 fi
-if [ "$mode" != verify ]; then
+if [ "$mode" = recheck ]; then
+  stamp "small N, long time: Figure 4's schedule at 3.2e4, 1.3e5 and 1e6 trajectories, 1000 T"
+  GPU_IDS=$(build-gpu/arnoldweb devices --json | python3 -c "import json,sys; print(' '.join(d['id'] for d in json.load(sys.stdin) if not d['cpu']))")
+  timeout 240 bash bench/gpu/small_n.sh build-gpu/arnoldweb 1000 $GPU_IDS
+  timeout 120 bash bench/gpu/small_n.sh build-gpu/arnoldweb 20 cpu
+fi
+if [ "$mode" != verify ] && [ "$mode" != recheck ]; then
 
 # ---------------------------------------------------------------- benchmark (issue 7)
 # Every step has its own time limit so that the whole call stays well inside
