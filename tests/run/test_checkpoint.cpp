@@ -65,9 +65,17 @@ TEST_SUITE("checkpoint") {
       CAPTURE(attempt);
       const std::string out = root + "/killed-" + std::to_string(attempt);
       awtest::StartedCli cli = awtest::start_cli({"run", scene, "--device", "cpu", "--out", out});
-      // at a random moment between 30% and 90% of an uninterrupted run's time
-      const double at = plain_ms * (0.3 + 0.6 * std::uniform_real_distribution<double>(0, 1)(rng));
-      std::this_thread::sleep_for(std::chrono::milliseconds(static_cast<long>(at)));
+      if (attempt == 0) {
+        // once its first checkpoint exists (so that at least one attempt resumes, however
+        // fast the machine: on 16 cores three random moments all missed the checkpoints)
+        const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+        while (arnoldweb::find_checkpoints(out).empty() && std::chrono::steady_clock::now() < until)
+          std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      } else {
+        // at a random moment between 30% and 90% of an uninterrupted run's time
+        const double at = plain_ms * (0.3 + 0.6 * std::uniform_real_distribution<double>(0, 1)(rng));
+        std::this_thread::sleep_for(std::chrono::milliseconds(static_cast<long>(at)));
+      }
       ::kill(cli.pid, SIGKILL);
       cli.finish();
       // killed before its first checkpoint, or after it finished: nothing to resume
