@@ -2,48 +2,15 @@
  *
  * The emitted header of an expression model (models/aw_expression.h, from
  * lib/src/physics/expression/emitter.cpp) includes this for the kinetic half
- * of the model interface (models/aw_models.h). Parameters: rp->model[0..2] = a,
- * [3..5] = b (model.kinetic_a, model.kinetic_b), the same layout and operation
- * order as the fourier model's (models/aw_fourier.h); the potential's
- * parameters follow from [6].
+ * of the model interface (models/aw_models.h): the general form of
+ * models/aw_kinetic_ab.h, a and b in rp->model[0..5] as in the fourier model;
+ * the potential's parameters follow from [6].
  */
 #ifndef AW_EXPRESSION_KINETIC_H
 #define AW_EXPRESSION_KINETIC_H
 
-#include "aw_state.h"
-#include "models/aw_kinetic.h"
+#include "models/aw_kinetic_ab.h"
 
 #define AW_EXPRESSION_FIRST_PARAMETER 6 /* rp->model index of the potential's first parameter */
-
-AW_FN lreal aw_model_kinetic(lreal px, lreal py, lreal pz, AW_CONSTANT aw_rparams* rp) {
-  AW_CONSTANT real* m = rp->model;
-  lreal linear = AW_FMA(AW_LSPLAT(m[5]), pz, AW_FMA(AW_LSPLAT(m[4]), py, AW_LSPLAT(m[3]) * px));
-  return AW_FMA(AW_LSPLAT(AW_R(0.5) * m[2]) * pz, pz,
-                AW_FMA(AW_LSPLAT(AW_R(0.5) * m[1]) * py, py, AW_FMA(AW_LSPLAT(AW_R(0.5) * m[0]) * px, px, linear)));
-}
-
-/* u_i += d (a_i p_i + b_i) */
-AW_FN void aw_model_drift(aw_lstate* s, real d, AW_CONSTANT aw_rparams* rp) {
-  AW_CONSTANT real* m = rp->model;
-  s->ux = AW_FMA(AW_LSPLAT(d * m[0]), s->px, s->ux + d * m[3]);
-  s->uy = AW_FMA(AW_LSPLAT(d * m[1]), s->py, s->uy + d * m[4]);
-  s->uz = AW_FMA(AW_LSPLAT(d * m[2]), s->pz, s->uz + d * m[5]);
-}
-
-/* the diagonal of d^2T/dP^2 */
-AW_FN void aw_model_kinetic_diag(AW_CONSTANT aw_rparams* rp, real* a) {
-  a[0] = rp->model[0];
-  a[1] = rp->model[1];
-  a[2] = rp->model[2];
-}
-
-/* s > 0 with T(s n) = ke along the unit direction n: A s^2/2 + B s = ke with
- * A = sum a_i n_i^2, B = sum b_i n_i (models/aw_kinetic.h) */
-AW_FN lreal aw_model_speed(lreal ke, lreal dx, lreal dy, lreal dz, AW_CONSTANT aw_rparams* rp, lreal* ok) {
-  AW_CONSTANT real* m = rp->model;
-  lreal A = AW_FMA(AW_LSPLAT(m[2]), dz * dz, AW_FMA(AW_LSPLAT(m[1]), dy * dy, AW_LSPLAT(m[0]) * (dx * dx)));
-  lreal B = AW_FMA(AW_LSPLAT(m[5]), dz, AW_FMA(AW_LSPLAT(m[4]), dy, AW_LSPLAT(m[3]) * dx));
-  return aw_kinetic_speed(ke, A, B, ok);
-}
 
 #endif /* AW_EXPRESSION_KINETIC_H */

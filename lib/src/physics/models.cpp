@@ -159,9 +159,7 @@ ModelRow fourier() {
     for (int j = 0; j < static_cast<int>(rp.model[6]); ++j) sum += std::fabs(rp.model[7 + 5 * j + 3]);
     return std::array<double, 2>{-sum, sum};
   };
-  r.kinetic = [](const RealParams& rp) {
-    return std::array<double, 6>{rp.model[0], rp.model[1], rp.model[2], rp.model[3], rp.model[4], rp.model[5]};
-  };
+  r.kinetic = kinetic_in_slots;
   r.hessian_bound = [](const RealParams& rp) {  // sum |c_k| |k|^2
     double sum = 0;
     for (int j = 0; j < static_cast<int>(rp.model[6]); ++j) {
@@ -219,6 +217,10 @@ const ModelRow& model_of(const Scene& scene) {
   const ModelRow* m = find_model(scene.model_kind);
   if (!m) throw SceneError(scene.file, 0, 0, "model.kind", "unknown model \"" + scene.model_kind + "\"");
   return *m;
+}
+
+std::array<double, 6> kinetic_in_slots(const RealParams& rp) {
+  return {rp.model[0], rp.model[1], rp.model[2], rp.model[3], rp.model[4], rp.model[5]};
 }
 
 bool standard_kinetic(const ModelRow& model, const RealParams& rp) {

@@ -65,6 +65,10 @@ const ModelRow& model_of(const Scene& scene);
 // The row of an expression model (model.kind = "expression") for this scene.
 const ModelRow& expression_row(const Scene& scene);
 
+// The kinetic coefficients of a model that keeps a and b in rp.model[0..5]
+// (models/aw_kinetic_ab.h: fourier and expression models).
+std::array<double, 6> kinetic_in_slots(const RealParams& rp);
+
 // Whether the kinetic form is |P|^2/2 (a = 1, b = 0).
 bool standard_kinetic(const ModelRow& model, const RealParams& rp);
 // Whether every a_i > 0: then the energy bounds the momenta.

@@ -107,9 +107,7 @@ std::unique_ptr<ModelRow> make_row(const Scene& scene) {
   const double pad = 0.01 * (range[1] - range[0]);
   range = {range[0] - pad, range[1] + pad};
   r->v_range = [range](const RealParams&) { return range; };
-  r->kinetic = [](const RealParams& rp) {
-    return std::array<double, 6>{rp.model[0], rp.model[1], rp.model[2], rp.model[3], rp.model[4], rp.model[5]};
-  };
+  r->kinetic = kinetic_in_slots;
   const double hessian = sampled_hessian_bound(*model);
   r->hessian_bound = [hessian](const RealParams&) { return hessian; };
   const auto waves = expression::wave_vectors(*model);
