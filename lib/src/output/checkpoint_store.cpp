@@ -23,41 +23,20 @@
 namespace arnoldweb {
 namespace fs = std::filesystem;
 
-namespace {
-
-// Alive and not a zombie (a killed rank whose parent died too waits as a
-// zombie until init reaps it).
-bool running(long pid) {
-  if (pid <= 0 || pid == ::getpid()) return false;
-  if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno != EPERM) return false;
-  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
-  std::string stat;
-  if (!std::getline(in, stat)) return true;
-  const auto close = stat.rfind(')');
-  return close == std::string::npos || close + 2 >= stat.size() || stat[close + 2] != 'Z';
-}
-
-}  // namespace
 
 std::vector<FoundCheckpoint> find_checkpoints(const std::string& dir) {
   std::vector<FoundCheckpoint> found;
   const fs::path final_dir(detail::normalise_output_dir(dir));
   const fs::path parent = final_dir.has_parent_path() ? final_dir.parent_path() : fs::path(".");
-  const std::string prefix = final_dir.filename().string() + ".partial-";
-  std::error_code ec;
-  for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
-    const std::string name = it->path().filename().string();
-    if (name.compare(0, prefix.size(), prefix) != 0) continue;
-    const std::string digits = name.substr(prefix.size());
-    if (digits.empty() || digits.size() > 10 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+  for (const detail::StagingSibling& sib : detail::staging_siblings(final_dir.string())) {
     struct stat st {};
-    const fs::path file = it->path() / detail::kCheckpointFile;
+    const fs::path file = fs::path(sib.path) / detail::kCheckpointFile;
     if (::lstat(file.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
     FoundCheckpoint f;
-    f.staging_dir = (parent == "." && !final_dir.has_parent_path() ? fs::path(name) : it->path()).string();
+    f.staging_dir = (parent == "." && !final_dir.has_parent_path() ? fs::path(sib.name) : fs::path(sib.path)).string();
     f.file = (fs::path(f.staging_dir) / detail::kCheckpointFile).string();
-    f.pid = std::strtol(digits.c_str(), nullptr, 10);
-    f.running = running(f.pid);
+    f.pid = sib.pid;
+    f.running = detail::process_running(f.pid);
     found.push_back(f);
   }
   return found;

@@ -164,28 +164,50 @@ bool remove_written(const fs::path& dir) {
   return ::rmdir(dir.c_str()) == 0;
 }
 
-bool process_alive(long pid) { return pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM); }
+}  // namespace
 
-// Staging directories (<name>.partial-PID) that a dead process left beside
-// `final_dir`: removed if they carry arnoldweb's marker.
-void remove_stale_staging(const fs::path& final_dir) {
+std::vector<StagingSibling> staging_siblings(const std::string& final_dir_name) {
+  const fs::path final_dir(final_dir_name);
   const fs::path parent = final_dir.has_parent_path() ? final_dir.parent_path() : fs::path(".");
   const std::string prefix = final_dir.filename().string() + ".partial-";
+  std::vector<StagingSibling> found;
   std::error_code ec;
   for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
     if (name.compare(0, prefix.size(), prefix) != 0) continue;
     const std::string digits = name.substr(prefix.size());
     if (digits.empty() || digits.size() > 10 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
-    const long pid = std::strtol(digits.c_str(), nullptr, 10);
-    if (pid == ::getpid() || process_alive(pid)) continue;
+    found.push_back({it->path().string(), name, std::strtol(digits.c_str(), nullptr, 10)});
+  }
+  return found;
+}
+
+bool process_running(long pid) {
+  if (pid <= 0 || pid == ::getpid()) return false;
+  if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno != EPERM) return false;
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string stat;
+  if (!std::getline(in, stat)) return true;
+  const auto close = stat.rfind(')');
+  return close == std::string::npos || close + 2 >= stat.size() || stat[close + 2] != 'Z';
+}
+
+namespace {
+
+// Staging directories (<name>.partial-PID) that a dead process left beside
+// `final_dir`: removed if they carry arnoldweb's marker.
+void remove_stale_staging(const fs::path& final_dir) {
+  for (const StagingSibling& sib : staging_siblings(final_dir.string())) {
+    if (sib.pid == ::getpid() || process_running(sib.pid)) continue;
+    const fs::path dir(sib.path);
     struct stat st {};
-    if (::lstat(it->path().c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) continue;
-    if (::lstat((it->path() / kMarker).c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
+    if (::lstat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) continue;
+    if (::lstat((dir / kMarker).c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
     // a checkpoint is kept until a resumed run consumes it
-    if (::lstat((it->path() / kCheckpointFile).c_str(), &st) == 0) continue;
+    if (::lstat((dir / kCheckpointFile).c_str(), &st) == 0) continue;
     // everything in it was written by the dead run: files of outputs, temporaries, the marker
-    fs::remove_all(it->path(), ec);
+    std::error_code ec;
+    fs::remove_all(dir, ec);
   }
 }
 

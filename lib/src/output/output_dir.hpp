@@ -41,6 +41,19 @@ std::string why_not_replaceable(const std::string& dir, const std::string& scene
 // names arnoldweb writes).
 std::vector<std::string> written_files(const std::string& dir);
 
+// The staging directories beside `final_dir` (<name>.partial-PID, PID in
+// decimal), whatever their state, with the process id in their name.
+struct StagingSibling {
+  std::string path;  // as found (parent / name)
+  std::string name;
+  long pid = 0;
+};
+std::vector<StagingSibling> staging_siblings(const std::string& final_dir);
+
+// Whether process `pid` is running: alive and not a zombie (a killed rank whose
+// parent died too waits as a zombie until init reaps it); never this process.
+bool process_running(long pid);
+
 // Removes, in a staging directory this process owns, the files that other
 // (dead) processes' atomic writes left half-written (".NAME.tmp-PID-N").
 void remove_dead_temporaries(const std::string& staging);
