@@ -342,8 +342,9 @@ Staging::Staging(const std::string& final_dir, const OutputOptions& options) : o
 
 namespace {
 
-// ".NAME.tmp-PID-N": a file that write_file_atomically had not finished
-bool is_temporary_of(const std::string& name, long pid) {
+// ".NAME.tmp-PID-N" with PID not this process: a file that another process's
+// write_file_atomically had not finished
+bool is_foreign_temporary(const std::string& name) {
   const auto at = name.rfind(".tmp-");
   if (name.empty() || name[0] != '.' || at == std::string::npos || at == 0) return false;
   const std::string tail = name.substr(at + 5);
@@ -352,7 +353,7 @@ bool is_temporary_of(const std::string& name, long pid) {
   const std::string p = tail.substr(0, dash), n = tail.substr(dash + 1);
   auto digits = [](const std::string& t) { return t.find_first_not_of("0123456789") == std::string::npos; };
   if (!digits(p) || !digits(n)) return false;
-  return pid < 0 || std::to_string(pid) != p;
+  return std::to_string(::getpid()) != p;
 }
 
 }  // namespace
@@ -364,7 +365,7 @@ bool is_temporary_of(const std::string& name, long pid) {
 void remove_dead_temporaries(const std::string& staging) {
   std::error_code ec;
   for (fs::recursive_directory_iterator it(staging, ec), end; !ec && it != end; it.increment(ec))
-    if (it->is_regular_file(ec) && is_temporary_of(it->path().filename().string(), ::getpid()))
+    if (it->is_regular_file(ec) && is_foreign_temporary(it->path().filename().string()))
       ::unlink(it->path().c_str());
 }
 

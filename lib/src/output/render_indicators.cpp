@@ -14,6 +14,7 @@
 #include "aw_params.h"
 #include "output/canvas.hpp"
 #include "output/indicator_pictures.hpp"
+#include "output/sphere_view.hpp"
 
 namespace arnoldweb::detail {
 namespace {
@@ -69,24 +70,6 @@ std::vector<double> column(const Result& r, int slot) {
   std::vector<double> v(n);
   for (std::size_t t = 0; t < n; ++t) v[t] = r.indicators[t * AW_IND_REALS + slot];
   return v;
-}
-
-// Paints the Mollweide ellipse of semi-axes (a, a/2) about (cx, cy) with the
-// colour-map position value(d) of each direction d (-1: background).
-template <class Value>
-void paint_mollweide(Canvas& c, double cx, double cy, double a, Value value) {
-  c.paint(static_cast<int>(cx - a - 1), static_cast<int>(cy - a / 2 - 1), static_cast<int>(2 * a + 3),
-          static_cast<int>(a + 3),
-          [&](double px, double py) {
-            const double x = (px - cx) / a * 2 * M_SQRT2, y = (cy - py) / (a / 2) * M_SQRT2;
-            if (x * x / 8 + y * y / 2 > 1) return -1.0;
-            const double theta = std::asin(std::clamp(y / M_SQRT2, -1.0, 1.0));
-            const double lat = std::asin(std::clamp((2 * theta + std::sin(2 * theta)) / M_PI, -1.0, 1.0));
-            const double lon = M_PI * x / (2 * M_SQRT2 * std::cos(theta));
-            if (std::fabs(lon) > M_PI) return -1.0;
-            return value(Vec3{std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)});
-          },
-          2);
 }
 
 void render_healpix(const std::string& path, const std::vector<double>& v, int nside, const std::string& title,

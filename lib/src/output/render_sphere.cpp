@@ -141,6 +141,21 @@ void draw_square(Canvas& c, const View& view, double cx, double cy, double radiu
   });
 }
 
+void paint_mollweide(Canvas& c, double cx, double cy, double a, const std::function<double(const Vec3&)>& value) {
+  c.paint(static_cast<int>(cx - a - 1), static_cast<int>(cy - a / 2 - 1), static_cast<int>(2 * a + 3),
+          static_cast<int>(a + 3),
+          [&](double px, double py) {
+            const double x = (px - cx) / a * 2 * M_SQRT2, y = (cy - py) / (a / 2) * M_SQRT2;
+            if (x * x / 8 + y * y / 2 > 1) return -1.0;
+            const double theta = std::asin(std::clamp(y / M_SQRT2, -1.0, 1.0));
+            const double lat = std::asin(std::clamp((2 * theta + std::sin(2 * theta)) / M_PI, -1.0, 1.0));
+            const double lon = M_PI * x / (2 * M_SQRT2 * std::cos(theta));
+            if (std::fabs(lon) > M_PI) return -1.0;
+            return value(Vec3{std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)});
+          },
+          2);
+}
+
 }  // namespace arnoldweb::detail
 
 namespace arnoldweb {
@@ -168,19 +183,7 @@ void render_mollweide_png(const std::string& path, const std::vector<std::uint64
   detail::Canvas c(w, h);
   const detail::LogScale scale(map);
   const double a = 0.45 * w, cx = 0.5 * w, cy = 0.45 * h;  // semi-axes a and a/2
-  c.paint(static_cast<int>(cx - a - 1), static_cast<int>(cy - a / 2 - 1), static_cast<int>(2 * a + 3),
-          static_cast<int>(a + 3),
-          [&](double px, double py) {
-            const double x = (px - cx) / a * 2 * M_SQRT2, y = (cy - py) / (a / 2) * M_SQRT2;
-            if (x * x / 8 + y * y / 2 > 1) return -1.0;
-            const double theta = std::asin(std::clamp(y / M_SQRT2, -1.0, 1.0));
-            const double lat = std::asin(std::clamp((2 * theta + std::sin(2 * theta)) / M_PI, -1.0, 1.0));
-            const double lon = M_PI * x / (2 * M_SQRT2 * std::cos(theta));
-            if (std::fabs(lon) > M_PI) return -1.0;
-            const Vec3 d = {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
-            return scale(map[vec2pix_ring(nside, d)]);
-          },
-          2);
+  paint_mollweide(c, cx, cy, a, [&](const Vec3& d) { return scale(map[vec2pix_ring(nside, d)]); });
   c.colour_bar(0.25 * w, 0.9 * h, 0.5 * w, 0.025 * h, scale, "");
   c.text(0.03 * w, 0.06 * h, o.title, 15);
   c.text(0.03 * w, 0.985 * h,

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "arnoldweb/sphere.hpp"
@@ -24,6 +25,9 @@ struct View {
 // The map on a disc of `radius` pixels about (cx, cy).
 void paint_sphere(Canvas& c, const std::vector<std::uint64_t>& map, int nside, const View& view, double cx,
                   double cy, double radius, const LogScale& scale);
+// The Mollweide ellipse of semi-axes (a, a/2) about (cx, cy), each pixel the
+// colour-map position value(d) of its direction d (-1: background).
+void paint_mollweide(Canvas& c, double cx, double cy, double a, const std::function<double(const Vec3&)>& value);
 // The circles m.P = 0 with max |m_i| <= max_order, labelled.
 void draw_circles(Canvas& c, const View& view, double cx, double cy, double radius, const std::vector<Resonance>& list);
 // The circles a picture draws: options.resonances (canonical, coprime) if given, else every
