@@ -1,6 +1,6 @@
 /* arnoldweb OpenCL entry points: thin kernels over lib/device.
  * Compiled at run time with the plan's options (KernelConfig::defines()):
- * -DAW_FEATURES=<mask> -DAW_STAGES=<n> -DAW_KICK_FIRST=<0|1> -DAW_INITIAL=<k>
+ * -DAW_FEATURES=<mask> -DAW_STAGES=<n> -DAW_KICK_FIRST=<0|1> -DAW_GRADIENT=<0|1> -DAW_INITIAL=<k>
  * -DAW_MODEL=<id> -DAW_LANES=<n> [-DAW_FLOAT] [-DAW_NATIVE_MATH]. */
 #define AW_LOCAL __local
 #define AW_BARRIER() barrier(CLK_LOCAL_MEM_FENCE)
@@ -12,7 +12,7 @@ __kernel void aw_ensemble(ulong chunk_first, ulong chunk_end, __constant aw_rpar
                           __global real* initial_r, __global real* final_r,
                           __global long* final_i, __global real* indicators, __global real* group_stats,
                           __local real* scratch) {
-  const aw_config cfg = {AW_FEATURES, AW_STAGES, AW_KICK_FIRST, AW_INITIAL};
+  const aw_config cfg = {AW_FEATURES, AW_STAGES, AW_KICK_FIRST, AW_INITIAL, AW_GRADIENT};
   aw_lanes l = {chunk_first + (ulong)get_global_id(0) * AW_LANES, chunk_end, chunk_first};
   real emax = 0, esum = 0;
   if (l.first < chunk_end) {

@@ -1,6 +1,6 @@
 /* arnoldweb CUDA entry points: thin kernels over lib/device.
  * Compiled at run time by NVRTC with the same defines as the OpenCL kernels:
- * -DAW_FEATURES=<mask> -DAW_STAGES=<n> -DAW_KICK_FIRST=<0|1> -DAW_INITIAL=<k>
+ * -DAW_FEATURES=<mask> -DAW_STAGES=<n> -DAW_KICK_FIRST=<0|1> -DAW_GRADIENT=<0|1> -DAW_INITIAL=<k>
  * -DAW_MODEL=<id> [-DAW_FLOAT] [-DAW_NATIVE_MATH]. */
 #define AW_LOCAL
 #define AW_BARRIER() __syncthreads()
@@ -28,7 +28,7 @@ extern "C" __global__ void __launch_bounds__(AW_CUDA_MAX_BLOCK, AW_CUDA_MIN_BLOC
                 aw_u32* counters, real* initial_r, real* final_r, aw_i64* final_i, real* indicators, real* group_stats) {
   extern __shared__ unsigned char aw_shared[];
   real* scratch = (real*)aw_shared;
-  const aw_config cfg = {AW_FEATURES, AW_STAGES, AW_KICK_FIRST, AW_INITIAL};
+  const aw_config cfg = {AW_FEATURES, AW_STAGES, AW_KICK_FIRST, AW_INITIAL, AW_GRADIENT};
   aw_lanes l = {chunk_first + ((aw_u64)blockIdx.x * blockDim.x + threadIdx.x), chunk_end, chunk_first};
   real emax = 0, esum = 0;
   if (l.first < chunk_end) {

@@ -25,6 +25,7 @@ typedef struct {
   int stages;       /* force evaluations per step */
   int kick_first;   /* 1: kick-drift-kick with merged kicks; 0: drift first */
   int initial;      /* AW_INITIAL_* */
+  int gradient;     /* 1: the method's kicks carry force-gradient terms (aw_stepper.h) */
 } aw_config;
 
 /* ------------------------------------------------------ real parameters */
@@ -57,6 +58,8 @@ typedef struct {
   real kick_merged;   /* (b_last + b_0) h, for back-to-back steps */
   real drift[AW_MAX_STAGES + 1]; /* a_i h / 2pi (turns per unit momentum) */
   real kick[AW_MAX_STAGES + 1];  /* b_i h */
+  real gradient[AW_MAX_STAGES + 1]; /* g_i h^3: force-gradient methods only (aw_stepper.h) */
+  real gradient_merged;             /* (g_last + g_0) h^3 */
   aw_cap cap;
   aw_box box;
   aw_gaussian gaussian;

@@ -35,7 +35,9 @@ def devices() -> list:
 
 def methods() -> list:
     """The integration methods (integrator.method), as dicts: name, title, source, order,
-    eps_orders, stages, kick_first, family, stability, drift and kick coefficients."""
+    eps_orders, stages, kick_first, family, stability, drift and kick coefficients, and the
+    force-gradient coefficients ("gradient", empty for most) and "work" (cost of a step in plain
+    force evaluations)."""
     return _core.methods()
 
 

@@ -43,6 +43,8 @@ nb::list methods() {
     r["stability"] = m.stability;
     r["drift"] = m.drift;
     r["kick"] = m.kick;
+    r["gradient"] = m.gradient;  // force-gradient coefficients g_i (empty: none)
+    r["work"] = m.work();        // cost of a step in plain force evaluations
     out.append(r);
   }
   return out;

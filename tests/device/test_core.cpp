@@ -100,7 +100,7 @@ TEST_SUITE("core") {
     double max_first = 0, max_second = 0;
     const int segments = 1000, steps = 1000;
     for (int g = 0; g < segments; ++g) {
-      core_d::aw_segment(&s, steps, core_d::rp_of(p), p.method.stages, p.method.kick_first);
+      core_d::aw_segment(&s, steps, core_d::rp_of(p), p.method.stages, p.method.kick_first, p.method.force_gradient());
       const double de = std::fabs(core_d::aw_energy(&s) - e0);
       (g < segments / 2 ? max_first : max_second) = std::max(g < segments / 2 ? max_first : max_second, de);
     }
@@ -117,7 +117,7 @@ TEST_SUITE("core") {
     REQUIRE(ok);
     core_d::aw_force(&s);
     const double x0 = s.ux, px0 = s.px;
-    core_d::aw_segment(&s, 5000, core_d::rp_of(p), p.method.stages, p.method.kick_first);
+    core_d::aw_segment(&s, 5000, core_d::rp_of(p), p.method.stages, p.method.kick_first, p.method.force_gradient());
     CHECK(std::fabs(s.ux) <= 0.5);
     CHECK(std::fabs(s.uy) <= 0.5);
     CHECK(std::fabs(s.uz) <= 0.5);

@@ -87,7 +87,7 @@ Point steps(const Plan& plan, const Point& q, int n) {
   core_d::aw_lstate s = state_of(q);
   const core_d::aw_rparams* rp = core_d::rp_of(plan);
   core_d::aw_force(&s, rp);
-  core_d::aw_segment(&s, n, rp, plan.kernel.stages, plan.kernel.kick_first ? 1 : 0);
+  core_d::aw_segment(&s, n, rp, plan.kernel.stages, plan.kernel.kick_first ? 1 : 0, 0);
   return point_of(s);
 }
 
@@ -101,7 +101,7 @@ double norm(const Point& a) {
 core_d::aw_lstate advance(const Plan& plan, core_d::aw_lstate s, int n) {
   const core_d::aw_rparams* rp = core_d::rp_of(plan);
   core_d::aw_force(&s, rp);
-  core_d::aw_segment(&s, n, rp, plan.kernel.stages, plan.kernel.kick_first ? 1 : 0);
+  core_d::aw_segment(&s, n, rp, plan.kernel.stages, plan.kernel.kick_first ? 1 : 0, 0);
   return s;
 }
 
@@ -169,7 +169,7 @@ TEST_SUITE("indicators") {
                                                "observe.energy_error=false"}));
       const core_d::aw_rparams* rp = core_d::rp_of(plan);
       const core_d::aw_config cfg = {plan.kernel.features, plan.kernel.stages, plan.kernel.kick_first ? 1 : 0,
-                                     plan.kernel.initial};
+                                     plan.kernel.initial, plan.kernel.gradient ? 1 : 0};
       const Point q0 = {0.4, 1.3, -2.1, 3.1, -2.2, 1.7};
       const int n = 5;  // steps: merged kicks between them
       for (std::size_t k = 0; k < 6; ++k) {
@@ -341,6 +341,23 @@ TEST_SUITE("indicators") {
       CHECK(m.find("48") != std::string::npos);
       CHECK(m.find("100") != std::string::npos);
     }
+  }
+
+  TEST_CASE("a force-gradient method with an indicator is refused, naming the key and the method") {
+    for (const char* observe : {"fli = true", "megno = true", "lyapunov = true"}) {
+      CAPTURE(observe);
+      try {
+        make_plan(awtest::scene_from(std::string("[integrator]\nmethod = \"sbab3c\"\n[observe]\n") + observe + "\n"));
+        FAIL("no error");
+      } catch (const SceneError& e) {
+        const std::string m = e.what();
+        CHECK(m.find("integrator.method") != std::string::npos);
+        CHECK(m.find("sbab3c") != std::string::npos);
+        CHECK(m.find("third derivatives") != std::string::npos);
+      }
+    }
+    // without an indicator the same method plans
+    CHECK(make_plan(awtest::scene_from("[integrator]\nmethod = \"sbab3c\"\n")).kernel.gradient);
   }
 
   TEST_CASE("FLI along a line of directions across p_x = p_y marks the resonance at 45 degrees") {

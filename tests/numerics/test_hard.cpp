@@ -86,7 +86,7 @@ TEST_SUITE("hard") {
       const LdSplitting ld(plan);
       DoubleRadians naive(plan, l);
       for (std::int64_t done = 0; done < kSteps; done += kSample) {
-        core_d::aw_segment(&s, kSample, core_d::rp_of(plan), plan.method.stages, plan.method.kick_first);
+        core_d::aw_segment(&s, kSample, core_d::rp_of(plan), plan.method.stages, plan.method.kick_first, plan.method.force_gradient());
         for (std::int64_t n = 0; n < kSample; ++n) {
           ld.step(l);
           naive.step();

@@ -219,7 +219,7 @@ inline std::int64_t steps_per_t(const arnoldweb::Plan& plan) {
 // segmentation when `steps` is the plan's steps_per_segment).
 inline void advance(core_d::aw_lstate* s, const arnoldweb::Plan& plan, std::int64_t n, std::int64_t steps) {
   for (std::int64_t k = 0; k < n; ++k)
-    core_d::aw_segment(s, steps, core_d::rp_of(plan), plan.method.stages, plan.method.kick_first);
+    core_d::aw_segment(s, steps, core_d::rp_of(plan), plan.method.stages, plan.method.kick_first, plan.method.force_gradient());
 }
 
 // Growth factor of a perturbation of 1e-12 in p_x after t T, in the core (the
@@ -272,7 +272,7 @@ inline DriftStats energy_drift(const Orbit& o, std::int64_t steps, std::int64_t 
   long double st = 0, sd = 0, stt = 0, std_ = 0;
   DriftStats r;
   for (std::int64_t i = 0; i < samples; ++i) {
-    core_d::aw_segment(&s, every, core_d::rp_of(plan), plan.method.stages, plan.method.kick_first);
+    core_d::aw_segment(&s, every, core_d::rp_of(plan), plan.method.stages, plan.method.kick_first, plan.method.force_gradient());
     const double de = core_d::aw_energy(&s) - e0;
     const long double t = static_cast<long double>(i + 1);
     st += t;

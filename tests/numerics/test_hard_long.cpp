@@ -69,7 +69,7 @@ TEST_SUITE("hard-long") {
       const double e0 = core_d::aw_energy(&s);
       long double psum[3] = {0, 0, 0};
       for (std::int64_t done = 0; done < kSteps; done += kSample) {
-        core_d::aw_segment(&s, kSample, core_d::rp_of(plan), plan.method.stages, plan.method.kick_first);
+        core_d::aw_segment(&s, kSample, core_d::rp_of(plan), plan.method.stages, plan.method.kick_first, plan.method.force_gradient());
         const double de = std::fabs(core_d::aw_energy(&s) - e0);
         if (done < kEdge) out[k].first_max = std::max(out[k].first_max, de);
         if (done >= kSteps - kEdge) out[k].last_max = std::max(out[k].last_max, de);

@@ -12,7 +12,10 @@
 // term, whose size at h = 0.05 is below the rounding of the double coefficients). It must
 // be the nominal p_k (within 0.3) for every power of eps that Method::eps_orders names,
 // and at least the last entry for the powers beyond. RKN methods (Method::rkn: the orders need {B,{B,{B,A}}} = 0) take a B
-// with B^2 = 0, which makes [B,[B,[B,A]]] vanish as it does for B = V(X).
+// with B^2 = 0, which makes [B,[B,[B,A]]] vanish as it does for B = V(X). A force-gradient kick
+// (Method::gradient) is exp(eps b h B + eps^2 g h^3 C) with C = [B,[A,B]], the linear-flow image of
+// the gradient of |grad V|^2 (it commutes with B when B^2 = 0, as the gradient kick commutes with
+// the kick). The stability limits in the tables are checked against the harmonic oscillator.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -155,8 +158,20 @@ Pair matrices(bool nilpotent) {
 Mat step(const Method& m, const Pair& p, q h, C eps) {
   Mat phi = identity();
   auto drift = [&](double a) { phi = expm(scaled(p.a, C{q(a) * h, 0})) * phi; };
+  // C = [B,[A,B]] = 2 BAB - BBA - ABB
+  const Mat bab = p.b * p.a * p.b, bba = p.b * p.b * p.a, abb = p.a * p.b * p.b;
+  const Mat c = bab + bab + scaled(bba, C{-1, 0}) + scaled(abb, C{-1, 0});
   auto kick = [&](double b) { phi = expm(scaled(p.b, eps * C{q(b) * h, 0})) * phi; };
-  if (m.kick_first) {
+  auto gradient_kick = [&](double b, double g) {
+    phi = expm(scaled(p.b, eps * C{q(b) * h, 0}) + scaled(c, eps * eps * C{q(g) * h * h * h, 0})) * phi;
+  };
+  if (!m.gradient.empty()) {  // kick-first
+    gradient_kick(m.kick[0], m.gradient[0]);
+    for (int i = 0; i < m.stages; ++i) {
+      drift(m.drift[i]);
+      gradient_kick(m.kick[i + 1], m.gradient[i + 1]);
+    }
+  } else if (m.kick_first) {
     kick(m.kick[0]);
     for (int i = 0; i < m.stages; ++i) {
       drift(m.drift[i]);
@@ -233,6 +248,14 @@ TEST_SUITE("methods") {
       const std::size_t k0 = m.kick_first ? 0 : 1;
       for (std::size_t i = k0; i < m.kick.size(); ++i)
         CHECK(std::fabs(m.kick[i] - m.kick[m.kick.size() - 1 - (i - k0)]) < 1e-15);
+      if (!m.gradient.empty()) {
+        CHECK(m.kick_first);  // the gradient stepper is kick-first
+        CHECK(m.rkn);         // the gradient kick commutes with the kick only when V depends on X alone
+        REQUIRE(m.gradient.size() == m.kick.size());
+        for (std::size_t i = 0; i < m.gradient.size(); ++i)
+          CHECK(std::fabs(m.gradient[i] - m.gradient[m.gradient.size() - 1 - i]) < 1e-15);
+        CHECK(m.force_gradient());
+      }
       REQUIRE(!m.eps_orders.empty());
       int lowest = m.eps_orders[0];
       for (int p : m.eps_orders) lowest = std::min(lowest, p);
@@ -264,6 +287,49 @@ TEST_SUITE("methods") {
     }
   }
 
+  TEST_CASE("every table's stability limit is the harmonic oscillator's (|trace| of the step matrix reaches 2)") {
+    // V = w^2 x^2 / 2, t = h w, y = w x: drift y += a t p; kick p += (-b t + 2 g t^3) y (the gradient
+    // of |F|^2 = w^4 x^2 is 2 w^4 x). Stable while |trace| < 2 (the determinant is 1).
+    auto trace = [](const Method& m, double t) {
+      double a11 = 1, a12 = 0, a21 = 0, a22 = 1;  // the step matrix acting on (y, p)
+      auto drift = [&](double a) {
+        a11 += a * t * a21;
+        a12 += a * t * a22;
+      };
+      auto kick = [&](std::size_t i) {
+        const double g = m.gradient.empty() ? 0.0 : m.gradient[i];
+        const double k = -m.kick[i] * t + 2 * g * t * t * t;
+        a21 += k * a11;
+        a22 += k * a12;
+      };
+      if (m.kick_first) {
+        kick(0);
+        for (int i = 0; i < m.stages; ++i) {
+          drift(m.drift[i]);
+          kick(static_cast<std::size_t>(i) + 1);
+        }
+      } else {
+        drift(m.drift[0]);
+        for (int i = 1; i <= m.stages; ++i) {
+          kick(static_cast<std::size_t>(i));
+          drift(m.drift[i]);
+        }
+      }
+      return a11 + a22;
+    };
+    for (const Method& m : methods()) {
+      CAPTURE(m.name);
+      double t = 1e-3;  // first t with |trace| >= 2, then bisection
+      while (t < 8 && std::fabs(trace(m, t)) < 2) t += 1e-3;
+      double lo = t - 1e-3, hi = t;
+      for (int i = 0; i < 50; ++i) {
+        const double mid = (lo + hi) / 2;
+        (std::fabs(trace(m, mid)) >= 2 ? hi : lo) = mid;
+      }
+      CHECK(std::fabs(lo - m.stability) < 1e-3);
+    }
+  }
+
   TEST_CASE("the check has teeth: a perturbed coefficient or a missing RKN property shows") {
     // ABA(8,6,4) with one drift pair moved by 1e-6 (sums kept): its eps h^8 term becomes eps h^2
     Method m = find_method("aba864");
@@ -276,5 +342,10 @@ TEST_SUITE("methods") {
     Method r = find_method("srkn11b");
     r.rkn = false;
     CHECK(eps_slopes(r, 0.1)[2] < 4.5);
+    // SBAB3C with its corrector 1% off: the eps^2 h^2 term returns (order 2, not 4)
+    Method c = find_method("sbab3c");
+    c.gradient.front() *= 1.01;
+    c.gradient.back() *= 1.01;
+    CHECK(eps_slopes(c, 0.1)[1] < 2.5);
   }
 }

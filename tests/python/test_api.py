@@ -18,6 +18,8 @@ def test_methods_are_the_library_tables():
     assert ms["yoshida6a"]["order"] == 6
     assert ms["yoshida6a"]["stages"] == len(ms["yoshida6a"]["kick"]) - 1
     assert abs(sum(ms["yoshida6a"]["drift"]) - 1.0) < 1e-14
+    assert ms["yoshida6a"]["gradient"] == [] and ms["yoshida6a"]["work"] == 7
+    assert ms["chin4a"]["gradient"][1] == 1.0 / 72 and ms["chin4a"]["work"] > ms["chin4a"]["stages"]
 
 
 def test_scene_keys_cover_every_section():

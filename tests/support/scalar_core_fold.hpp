@@ -28,7 +28,8 @@ arnoldweb::Result run(const arnoldweb::Plan& plan, const RParams* rp, const IPar
   Outputs out = {hist.data(), counters.data(), initial_r.empty() ? nullptr : initial_r.data(),
                  final_r.empty() ? nullptr : final_r.data(), final_i.empty() ? nullptr : final_i.data(),
                  indicators.empty() ? nullptr : indicators.data()};
-  const Config cfg = {features, plan.kernel.stages, plan.kernel.kick_first ? 1 : 0, plan.kernel.initial};
+  const Config cfg = {features, plan.kernel.stages, plan.kernel.kick_first ? 1 : 0, plan.kernel.initial,
+                      plan.kernel.gradient ? 1 : 0};
   // One trajectory per call; the calls share the histograms and counters
   // through the core's own atomic increments, as a device's work-items do.
   // Threads only share the work: no lane, block or chunk structure of any

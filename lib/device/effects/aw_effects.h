@@ -59,7 +59,7 @@ AW_FN void aw_fx_segment(aw_config cfg, aw_fx* fx, aw_lstate* s, aw_i64 nsteps, 
   if (AW_HAS(AW_F_TANGENT))
     aw_segment_tangent(cfg, s, &fx->tangent, nsteps, rp);
   else
-    aw_segment(s, nsteps, rp, cfg.stages, cfg.kick_first);
+    aw_segment(s, nsteps, rp, cfg.stages, cfg.kick_first, cfg.gradient);
 }
 
 AW_FN void aw_fx_window_begin(aw_config cfg, aw_fx* fx) { fx->over = AW_LSPLAT(AW_R(0.0)); }

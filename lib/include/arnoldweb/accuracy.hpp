@@ -49,6 +49,7 @@ struct MethodFit {
   std::string method;
   int order = 0;   // nominal
   int stages = 0;  // force evaluations per step
+  double work = 0;  // their cost in plain force evaluations (Method::work)
   std::vector<PilotPoint> points;  // the pilot ladder, decreasing steps
   std::vector<PilotPoint> checks;  // runs at candidate steps (they join the fit)
   // max|dE| ~ C step^p between and below the measured steps; `order_fit` is
@@ -72,7 +73,7 @@ struct AccuracyChoice {
   double predicted_median = 0;
   double measured_max = -1;         // run on the pilot ensemble (-1: not run)
   double measured_median = -1;
-  double forces_per_t = 0;          // force evaluations per trajectory per T
+  double forces_per_t = 0;          // force evaluations per trajectory per T (Method::work per step)
   double guard_value = 0;           // h k |p|max
   bool meets = false;               // meets the tolerance with the safety factor
   std::string note;                 // why not, if it does not

@@ -25,6 +25,7 @@ struct KernelConfig {
   std::uint32_t features = 0;  // AW_F_* bits (lib/device/aw_params.h)
   int stages = 0;
   bool kick_first = true;
+  bool gradient = false;  // the method's kicks carry force-gradient terms
   int initial = 0;  // AW_INITIAL_*
   int model = 0;    // AW_MODEL_* (lib/device/models/aw_models.h)
   // An expression model's device header (model.kind = "expression", docs/models.md),

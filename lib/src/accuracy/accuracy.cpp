@@ -239,7 +239,7 @@ AccuracyChoice cheapest_step(const MethodFit& f, double target, double every, do
   c.step = every / static_cast<double>(n);
   c.predicted_max = pm(c.step);
   c.predicted_median = f.predict_median(c.step);
-  c.forces_per_t = f.stages / c.step;
+  c.forces_per_t = f.work / c.step;
   c.guard_value = step_guard_at(omega, c.step, every, every).value;
   c.meets = true;
   return c;
@@ -253,7 +253,7 @@ double optimistic_forces(const MethodFit& f, double target, double largest) {
   if (!(p.max > 0) || !std::isfinite(p.max)) return 0;
   double h = p.max <= target ? largest : p.step * std::pow(target / p.max, 1.0 / (f.top_order + 2));
   h = std::min(h, largest);
-  return f.stages / h;
+  return f.work / h;
 }
 
 }  // namespace
@@ -325,6 +325,7 @@ AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tole
     f.method = m.name;
     f.order = m.order;
     f.stages = m.stages;
+    f.work = m.work();
     f.top_order = m.eps_orders.empty() ? m.order : *std::max_element(m.eps_orders.begin(), m.eps_orders.end());
     const int first = o.prefilter ? std::min(o.steps_per_method, 2) : o.steps_per_method;
     for (int k = 0; k < first; ++k)
@@ -367,7 +368,7 @@ AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tole
         a.predicted_max = f.predict_max(scene.step);
         a.predicted_median = f.predict_median(scene.step);
       }
-    a.forces_per_t = m.stages / scene.step;
+    a.forces_per_t = m.work() / scene.step;
     a.guard_value = step_guard_at(omega, scene.step, unit, unit).value;
     a.meets = p.max <= target;
     if (!a.meets) a.note = "pilot max " + fmt(p.max) + " > " + fmt(target);

@@ -3,6 +3,7 @@
 #include "arnoldweb/methods.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
@@ -83,6 +84,12 @@ Method near_integrable(std::string name, std::string title, std::string source,
   m.stability = stability;
   m.family = "near-integrable";
   return m;
+}
+
+const Method& find_in(const std::vector<Method>& all, const std::string& name) {
+  for (const Method& m : all)
+    if (m.name == name) return m;
+  throw std::logic_error("method table: no " + name);
 }
 
 // v followed by its mirror image; `repeat_centre`: the last element appears twice.
@@ -265,6 +272,79 @@ std::vector<Method> build() {
                 0.2170703479789911017143385924306336714532, -0.01737538195906509300561788011852699719871},
                true),
       3.146));
+  // ---- Force-gradient methods: kicks that carry h^3 grad|F|^2 (Method::gradient), from the
+  // force's own sin/cos. They need {B,{B,{B,A}}} = 0 (B = V(X)), so rkn = true.
+
+  // Laskar & Robutel (2001), the correctors: e^{-c h^3 eps^2 {{A,B},B}/2} SABA_n (or SBAB_n)
+  // e^{-c h^3 eps^2 {{A,B},B}/2} removes the eps^2 h^2 term: O(eps h^2n + eps^2 h^4). c is the
+  // coefficient of h^3 [B,[B,A]] in the method's modified generator, in closed form (checked
+  // by tests/physics/test_method_tables.cpp; SABA's agree with REBOUND's to 34 digits):
+  //   SABA: 1/12, (2 - sqrt 3)/24, (54 - 13 sqrt 15)/648, 0.0033967750...
+  //   SBAB: -1/24, 1/72, (13 - 5 sqrt 5)/288, 143/2400 - 791 sqrt 21/64800.
+  // SBAB_nC: the corrector merges into the first and last kick (same force evaluations as
+  // SBAB_n). SABA_nC: the correctors of neighbouring steps merge into one pure gradient kick
+  // between steps (b = 0), written kick-first: one evaluation more than SABA_n.
+  {
+    auto corrected = [&](const std::string& base, double c, double stability) {
+      const Method& b = find_in(all, base);
+      Method m = b;
+      m.name = base + "c";
+      std::string upper = base;  // "SABA2"
+      for (char& ch : upper) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+      m.title = "Laskar-Robutel " + upper + "C (" + upper + " with its corrector)";
+      m.rkn = true;
+      if (!b.kick_first) {  // D a0 K b1 ... K bs D as  ->  K(0) D a0 K b1 ... D as K(0)
+        m.kick_first = true;
+        m.stages = b.stages + 1;
+        m.kick = b.kick;   // b.kick[0] == 0
+        m.kick.push_back(0.0);
+      }
+      m.gradient.assign(m.kick.size(), 0.0);
+      m.gradient.front() = c / 2;
+      m.gradient.back() = c / 2;
+      m.eps_orders = {b.eps_orders.front(), 4};
+      m.order = std::min(m.eps_orders[0], 4);
+      m.stability = stability;
+      all.push_back(m);
+    };
+    // SBAB_1 is the leapfrog
+    Method sbab1 = find_in(all, "leapfrog");
+    sbab1.name = "sbab1";
+    sbab1.title = "Laskar-Robutel SBAB1 (leapfrog)";
+    sbab1.source = lr2001;
+    sbab1.family = "near-integrable";
+    all.push_back(sbab1);
+    corrected("saba1", 1.0 / 12, 2.000);
+    corrected("saba2", 0.01116454968463011276968973577058865137738, 2.869);
+    corrected("saba3", 0.005634593363122809402267823769797538671562, 2.887);
+    corrected("saba4", 0.003396775048208601331532157783492143797021, 3.010);
+    corrected("sbab1", -1.0 / 24, 1.779);
+    corrected("sbab2", 1.0 / 72, 2.449);
+    corrected("sbab3", 0.006318264279517539992896290473415343134712, 2.947);
+    corrected("sbab4", 0.003644793600153249302297139965449772919958, 2.997);
+    all.erase(std::find_if(all.begin(), all.end(), [](const Method& m) { return m.name == "sbab1"; }));
+  }
+
+  {  // Chin, Phys. Lett. A 226 (1997) 344, algorithm 4A ("C"): V/6, T/2, (2/3)(V + h^2/48
+     // [V,[T,V]]), T/2, V/6: fourth order in h for any eps, two force evaluations a step, the
+     // gradient on the middle one (g = 2/3 x 1/48 = 1/72).
+    Method m;
+    m.name = "chin4a";
+    m.title = "Chin 4A force-gradient";
+    m.source = "Chin, Phys. Lett. A 226 (1997) 344";
+    m.order = 4;
+    m.stages = 2;
+    m.kick_first = true;
+    m.drift = {0.5, 0.5};
+    m.kick = {1.0 / 6, 2.0 / 3, 1.0 / 6};
+    m.gradient = {0.0, 1.0 / 72, 0.0};
+    m.stability = 3.464;
+    m.eps_orders = {4};
+    m.rkn = true;
+    m.family = "force-gradient";
+    all.push_back(m);
+  }
+
   return all;
 }
 
@@ -286,6 +366,12 @@ std::string eps_order_string(const Method& m) {
   for (std::size_t i = 0; i < m.eps_orders.size(); ++i) s += (i ? "," : "") + std::to_string(m.eps_orders[i]);
   return s + ")";
 }
+
+bool Method::force_gradient() const {
+  return std::any_of(gradient.begin(), gradient.end(), [](double g) { return g != 0.0; });
+}
+
+double Method::work() const { return stages * (force_gradient() ? kGradientWork : 1.0); }
 
 std::string method_names() {
   std::string s;

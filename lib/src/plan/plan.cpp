@@ -219,10 +219,16 @@ void plan_kernel(const Scene& scene, const detail::ModelRow& model, Plan& p) {
   k.math = scene.math;
   k.stages = p.method.stages;
   k.kick_first = p.method.kick_first;
+  k.gradient = p.method.force_gradient();
   k.model = model.id;
   k.model_source = model.device_source;  // an expression model's header, or empty
   k.initial = initial_kind(scene);
   k.features = detail::features_of(scene);
+  if (k.gradient && (k.features & AW_F_TANGENT))
+    fail_at(scene, "integrator.method",
+            "the chaos indicators follow the tangent map of the step, and a force-gradient kick's tangent map "
+            "needs third derivatives of V, which the models do not provide: use a method without force-gradient "
+            "terms with observe.fli, observe.megno or observe.lyapunov (" + p.method.name + " has them)");
   if ((scene.initial_states || scene.final_states) && scene.trajectories > kMaxStateRecords)
     fail_at(scene, scene.final_states ? "observe.final_states" : "observe.initial_states",
             "state records are kept for at most " + std::to_string(kMaxStateRecords) + " trajectories (" +
@@ -265,6 +271,8 @@ void fill_reals(const Scene& scene, const Plan& p, detail::RealParams& rp) {
   for (std::size_t i = 0; i < m.drift.size(); ++i) rp.drift[i] = m.drift[i] * p.step;
   for (std::size_t i = 0; i < m.kick.size(); ++i) rp.kick[i] = m.kick[i] * h;
   rp.kick_merged = (m.kick.back() + m.kick.front()) * h;
+  for (std::size_t i = 0; i < m.gradient.size(); ++i) rp.gradient[i] = m.gradient[i] * (h * h * h);
+  if (!m.gradient.empty()) rp.gradient_merged = (m.gradient.back() + m.gradient.front()) * (h * h * h);
   fill_initial(scene, p.kernel.initial, rp);
   if (scene.zoom) region_of(scene.zoom_center, scene.zoom_width, rp.zoom);
   if (scene.confine) region_of(scene.confine_center, scene.confine_width, rp.confine);

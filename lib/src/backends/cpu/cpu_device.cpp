@@ -107,6 +107,7 @@ class CpuDevice final : public ComputeDevice {
     c.features = config_.features;
     c.stages = config_.stages;
     c.kick_first = config_.kick_first ? 1 : 0;
+    c.gradient = config_.gradient ? 1 : 0;
     c.initial = config_.initial;
     c.first = first;
     c.end = first + count;

@@ -16,6 +16,7 @@ struct CpuChunk {
   std::uint32_t features = 0;
   int stages = 0;
   int kick_first = 1;
+  int gradient = 0;  // force-gradient kicks (aw_config::gradient)
   int initial = 0;
   std::uint64_t first = 0, end = 0;  // trajectories [first, end)
   const void* rp = nullptr;          // aw_rparams of the variant's precision
