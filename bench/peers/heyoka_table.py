@@ -13,7 +13,7 @@ time to reach max |dE| (over the ensemble and the samples) <= 1e-6, 1e-8, 1e-10,
 2. arnoldweb (cpu backend, portable math, double): for each candidate method a ladder of steps
    h = 0.5 T / n; the wall time is summary.json's wall_seconds (the run, not the process start).
    Per target the cheapest measured run that meets it.
-3. heyoka.py: the same states in batches of 8 (taylor_adaptive_batch, SIMD lanes), one
+3. heyoka.py: the same states in batches of the SIMD width (taylor_adaptive_batch; --batch), one
    integrator per thread (--threads, default 2, each thread a contiguous share of the batches;
    heyoka releases the GIL in propagate_grid), a ladder of tolerances; the time is the wall
    time of the propagation (the integrators are compiled before the clock starts, and the
@@ -126,7 +126,7 @@ def heyoka_ladder(a, states):
     q0 = states[:, :3] * 2 * np.pi
     p0 = states[:, 3:]
     n = len(states)
-    batch = 8
+    batch = a.batch
     nb = (n + batch - 1) // batch
     pad = nb * batch - n
     q0p = np.vstack([q0, np.repeat(q0[-1:], pad, axis=0)])
@@ -186,7 +186,9 @@ def main():
     ap.add_argument("--energy", type=float, default=15.0)
     ap.add_argument("--trajectories", type=int, default=20000)
     ap.add_argument("--threads", type=int, default=2, help="heyoka threads (arnoldweb's cpu backend uses OpenMP)")
-    ap.add_argument("--methods", default="srkn11b,aba864,aba1064,bab84,kahan-li-s15")
+    ap.add_argument("--methods", default="srkn11b,aba864,aba1064,sbab3c,sbab4c,saba4c,chin4a")
+    ap.add_argument("--batch", type=int, default=0,
+                    help="heyoka batch size (default: heyoka's recommended SIMD size on this CPU)")
     ap.add_argument("--tolerances", default="1e-6,3e-7,1e-7,3e-8,1e-8,3e-9,1e-9,3e-10,1e-10,3e-11,1e-11,3e-12,1e-12,"
                     "3e-13,1e-13,3e-14,1e-14,3e-15,1e-15,3e-16,1e-16")
     ap.add_argument("--arnoldweb", default=os.path.join(ROOT, "build", "arnoldweb"))
@@ -211,8 +213,9 @@ def main():
         states = np.hstack([f["initial/position_turns"][:], f["initial/momentum"][:]])
     assert len(states) == a.trajectories
     model, width = cpu_model()
+    a.batch = a.batch or hy.recommended_simd_size()  # 8 doubles with AVX-512, 4 with AVX2
     print(f"E = {a.energy:g}, {a.trajectories} trajectories x 10 T, |dE| every 0.5 T; {model}, "
-          f"{os.cpu_count()} cores, {width}; heyoka.py {hy.__version__}, batch 8, {a.threads} threads; "
+          f"{os.cpu_count()} cores, {width}; heyoka.py {hy.__version__}, batch {a.batch}, {a.threads} threads; "
           f"{time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}", flush=True)
     # 2. and 3. back to back
     aw = arnoldweb_ladder(a, a.work)
@@ -220,13 +223,13 @@ def main():
     if a.json:
         with open(a.json, "w") as f:
             json.dump({"energy": a.energy, "trajectories": a.trajectories, "cpu": model, "vector": width,
-                       "heyoka": hy.__version__, "arnoldweb": aw, "heyoka_rows": hk,
+                       "heyoka": hy.__version__, "batch": a.batch, "arnoldweb": aw, "heyoka_rows": hk,
                        "date": time.strftime('%Y-%m-%d', time.gmtime())}, f, indent=1)
     for key, what in (("seconds", "wall seconds"), ("cpu_seconds", "core-seconds (CPU time of all threads)")):
         print()
         print(f"cheapest in {what}:")
-        print("| target max abs(dE) | heyoka.py (batch 8, %d threads): tol, order | its max abs(dE) | time | "
-              "arnoldweb cpu: cheapest method, step | its max abs(dE) | time | arnoldweb's lead |" % a.threads)
+        print("| target max abs(dE) | heyoka.py (batch %d, %d threads): tol, order | its max abs(dE) | time | "
+              "arnoldweb cpu: cheapest method, step | its max abs(dE) | time | arnoldweb's lead |" % (a.batch, a.threads))
         print("|---|---|---|---|---|---|---|---|")
         for t in TARGETS:
             h, w = best(hk, t, key), best(aw, t, key)
