@@ -17,6 +17,9 @@
 # recheck: build, the GPU-relevant suites (parity, order and expressions on
 # CUDA and NVIDIA OpenCL, models, indicators, outputs, reliability, checkpoints),
 # the quick parity check and the small-N rate (bench/gpu/small_n.sh); no benchmark.
+# accuracy: build the program, then bench/gpu/accuracy_fig3.sh on the first CUDA device: the
+# cheapest method and step for Figure 3 at max|dE| <= 1e-8 and what integrator.step = "auto"
+# chooses, each timed on the whole 1e8 (issue 16 target 5, issue 18; docs/accuracy.md).
 # Needs .device-deps/ (see docs/gpu.md): Debian packages the image lacks and
 # ../shared/gpu/device-setup.sh. Results go to $OUT (default ./gpu-out).
 set -uo pipefail
@@ -40,12 +43,22 @@ fi
 stamp "build"
 targets=""
 [ "$mode" = bench ] && targets="--target arnoldweb-cli arnoldweb_bench"
+[ "$mode" = accuracy ] && targets="--target arnoldweb-cli"
 if ! cmake --build build-gpu -j"$(nproc)" $targets >>"$OUT/build.txt" 2>&1; then
   grep -E "error|Error" -A4 "$OUT/build.txt" | head -60; exit 1
 fi
 build-gpu/arnoldweb devices | tee "$OUT/devices.txt"
 
 ctest_rc=-; parity_rc=-
+if [ "$mode" = accuracy ]; then
+  stamp "accuracy for less: Figure 3 at max|dE| <= ${AW_ACC_TARGETS:-1e-8}"
+  CUDA0=$(build-gpu/arnoldweb devices --json | python3 -c "import json,sys; print(next(d['id'] for d in json.load(sys.stdin) if d['id'].startswith('cuda')))")
+  nproc; grep -m1 "model name" /proc/cpuinfo
+  timeout 560 bash bench/gpu/accuracy_fig3.sh build-gpu/arnoldweb "$CUDA0" "$OUT/accuracy" "${AW_ACC_TARGETS:-1e-8}" ${AW_ACC_METHODS:-}
+  stamp "done"
+  (cd "$OUT" && tar czf /tmp/results.tgz --exclude=results.tgz . && mv /tmp/results.tgz results.tgz && rm -rf accuracy)
+  exit 0
+fi
 if [ "$mode" != bench ]; then
 stamp "tests"
 export ARNOLDWEB_LONG_TESTS=1   # the long hard cases run here, not in CI

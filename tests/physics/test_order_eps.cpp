@@ -138,28 +138,32 @@ TEST_SUITE("order") {
         // E = 15, h = T/40 (ht = 0.86): truncation error ~1e-8..1e-5, far above the
         // round-off random walk (~1e-13 after 10^6 steps)
         const std::uint64_t trajectories = long_run ? 128 : 32;
+        // The force-gradient methods at T/50, within the guard's advice (h k |p|max = 1.47 < pi/2):
+        // at T/40 (1.83) one of SABA4C's 128 trajectories jumps once, between 1e4 and 1.5e4 T,
+        // from 1.8e-3 to 9.7e-3 and stays there (an excursion near a step resonance, not a
+        // drift: x1.26 at T/50, x1.04 at T/80; cpu and CUDA alike, 2026-11-23)
+        const double step = find_method(name).force_gradient() ? 0.02 : 0.025;
         auto scene = [&](double duration) {
           return awtest::scene_from(R"(
             [model]
             energy = 15
             [ensemble]
             seed = 5
-            [integrator]
-            step = 0.025
             [observe]
             velocity_map = false
             energy_error = { every = 5 }
           )", {awtest::set("ensemble.trajectories", trajectories), awtest::set("integrator.method", name),
+               awtest::set("integrator.step", step),
                awtest::set("run.average", duration), awtest::set("run.duration", duration)}, "<drift>");
         };
-        const Result shortr = awtest::run_on(dev.id, make_plan(scene(2500)));  // 10^5 steps
-        const Result longr = awtest::run_on(dev.id, make_plan(scene(25000)));  // 10^6 steps
+        const Result shortr = awtest::run_on(dev.id, make_plan(scene(2500)));  // 10^5 steps (T/40)
+        const Result longr = awtest::run_on(dev.id, make_plan(scene(25000)));  // 10^6 steps (T/40)
         REQUIRE(longr.flagged() == 0);
         const double grow_max = longr.energy.max / shortr.energy.max;
         const double grow_mean = longr.energy.mean / shortr.energy.mean;
-        std::printf("drift on %s, %-8s E = 15, h = T/40, %llu trajectories: max|dE| %.2e after 1e5 steps, %.2e after "
-                    "1e6 (x%.2f); mean x%.2f\n",
-                    dev.id.c_str(), name.c_str(), static_cast<unsigned long long>(trajectories),
+        std::printf("drift on %s, %-8s E = 15, h = T/%.0f, %llu trajectories: max|dE| %.2e after 2500 T, %.2e after "
+                    "25000 T (x%.2f); mean x%.2f\n",
+                    dev.id.c_str(), name.c_str(), 1 / step, static_cast<unsigned long long>(trajectories),
                     shortr.energy.max, longr.energy.max, grow_max, grow_mean);
         // a drift would grow 10x over 10x the steps. Some growth there is: chaotic orbits
         // reach regions where the modified Hamiltonian differs more (measured x1.0-3.2 for
