@@ -86,9 +86,15 @@ Method near_integrable(std::string name, std::string title, std::string source,
   return m;
 }
 
-const Method& find_in(const std::vector<Method>& all, const std::string& name) {
+// The method named `name` in `all`, or null.
+const Method* lookup(const std::vector<Method>& all, const std::string& name) {
   for (const Method& m : all)
-    if (m.name == name) return m;
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+const Method& find_in(const std::vector<Method>& all, const std::string& name) {
+  if (const Method* m = lookup(all, name)) return *m;
   throw std::logic_error("method table: no " + name);
 }
 
@@ -285,13 +291,15 @@ std::vector<Method> build() {
   // SBAB_n). SABA_nC: the correctors of neighbouring steps merge into one pure gradient kick
   // between steps (b = 0), written kick-first: one evaluation more than SABA_n.
   {
-    auto corrected = [&](const std::string& base, double c, double stability) {
-      const Method& b = find_in(all, base);
+    // `base`: the uncorrected method's name; `b`: its table
+    auto corrected = [&](const std::string& base, const Method& b, double c, double stability) {
       Method m = b;
       m.name = base + "c";
       std::string upper = base;  // "SABA2"
       for (char& ch : upper) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
       m.title = "Laskar-Robutel " + upper + "C (" + upper + " with its corrector)";
+      m.source = lr2001;
+      m.family = "near-integrable";
       m.rkn = true;
       if (!b.kick_first) {  // D a0 K b1 ... K bs D as  ->  K(0) D a0 K b1 ... D as K(0)
         m.kick_first = true;
@@ -307,22 +315,17 @@ std::vector<Method> build() {
       m.stability = stability;
       all.push_back(m);
     };
-    // SBAB_1 is the leapfrog
-    Method sbab1 = find_in(all, "leapfrog");
-    sbab1.name = "sbab1";
-    sbab1.title = "Laskar-Robutel SBAB1 (leapfrog)";
-    sbab1.source = lr2001;
-    sbab1.family = "near-integrable";
-    all.push_back(sbab1);
-    corrected("saba1", 1.0 / 12, 2.000);
-    corrected("saba2", 0.01116454968463011276968973577058865137738, 2.869);
-    corrected("saba3", 0.005634593363122809402267823769797538671562, 2.887);
-    corrected("saba4", 0.003396775048208601331532157783492143797021, 3.010);
-    corrected("sbab1", -1.0 / 24, 1.779);
-    corrected("sbab2", 1.0 / 72, 2.449);
-    corrected("sbab3", 0.006318264279517539992896290473415343134712, 2.947);
-    corrected("sbab4", 0.003644793600153249302297139965449772919958, 2.997);
-    all.erase(std::find_if(all.begin(), all.end(), [](const Method& m) { return m.name == "sbab1"; }));
+    auto corrected_of = [&](const std::string& base, double c, double stability) {
+      corrected(base, find_in(all, base), c, stability);
+    };
+    corrected_of("saba1", 1.0 / 12, 2.000);
+    corrected_of("saba2", 0.01116454968463011276968973577058865137738, 2.869);
+    corrected_of("saba3", 0.005634593363122809402267823769797538671562, 2.887);
+    corrected_of("saba4", 0.003396775048208601331532157783492143797021, 3.010);
+    corrected("sbab1", find_in(all, "leapfrog"), -1.0 / 24, 1.779);  // SBAB_1 is the leapfrog
+    corrected_of("sbab2", 1.0 / 72, 2.449);
+    corrected_of("sbab3", 0.006318264279517539992896290473415343134712, 2.947);
+    corrected_of("sbab4", 0.003644793600153249302297139965449772919958, 2.997);
   }
 
   {  // Chin, Phys. Lett. A 226 (1997) 344, algorithm 4A ("C"): V/6, T/2, (2/3)(V + h^2/48
@@ -356,8 +359,7 @@ const std::vector<Method>& methods() {
 }
 
 const Method& find_method(const std::string& name) {
-  for (const Method& m : methods())
-    if (m.name == name) return m;
+  if (const Method* m = lookup(methods(), name)) return *m;
   throw std::out_of_range("unknown method '" + name + "' (known: " + method_names() + ")");
 }
 
