@@ -21,7 +21,8 @@ AW_FN void aw_reverse(aw_config cfg, aw_lstate* s, AW_CONSTANT aw_rparams* rp, A
   s->py = -s->py;
   s->pz = -s->pz;
   for (aw_i64 w = 0; w < ip->windows; ++w)
-    for (aw_i64 g = 0; g < ip->segments; ++g) aw_segment(s, ip->steps_per_segment, rp, cfg.stages, cfg.kick_first, cfg.gradient);
+    for (aw_i64 g = 0; g < ip->segments; ++g)
+      aw_segment(s, ip->steps_per_segment, rp, cfg.stages, cfg.kick_first, cfg.gradient);
   s->px = -s->px;
   s->py = -s->py;
   s->pz = -s->pz;
