@@ -35,18 +35,21 @@
     *(c) = AW_FROM_BITS(AW_AS_BITS(aw_cc_) ^ aw_neg_c_);                                      \
   } while (0)
 
+/* aw_sincos2pi_n(u, n, s, c): sin and cos of 2 pi n u for n a power of two
+ * (n u is exact: the multiple costs nothing beyond the reduction's own
+ * products); aw_sincos2pi(u, s, c) is n = 1. */
 #if defined(AW_NATIVE_MATH)
 /* The vendor's functions: faster on some devices, not bitwise portable. */
-AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) {
+AW_FN void aw_sincos2pi_n(lreal u, real n, lreal* s, lreal* c) {
 #if defined(AW_OPENCL)
-  *s = sinpi(AW_R(2.0) * u);
-  *c = cospi(AW_R(2.0) * u);
+  *s = sinpi((AW_R(2.0) * n) * u);
+  *c = cospi((AW_R(2.0) * n) * u);
 #elif defined(AW_CUDA) && defined(AW_FLOAT)
-  sincospif(AW_R(2.0) * u, s, c);
+  sincospif((AW_R(2.0) * n) * u, s, c);
 #elif defined(AW_CUDA)
-  sincospi(AW_R(2.0) * u, s, c);
+  sincospi((AW_R(2.0) * n) * u, s, c);
 #else
-  const real twopi = AW_R(6.283185307179586);
+  const real twopi = AW_R(6.283185307179586) * n;
 #if AW_LANES > 1
   *s = u; /* every element is overwritten below */
   *c = u;
@@ -62,11 +65,13 @@ AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) {
 }
 #else
 
-AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) {
-  /* 4u is exact, so fma(4, u, .) rounds the same sums as 4u + . would */
-  lreal t = AW_FMA(AW_LSPLAT(AW_R(4.0)), u, AW_LSPLAT(AW_ROUND_MAGIC)); /* k = t - magic: rint(4u) */
+AW_FN void aw_sincos2pi_n(lreal u, real n, lreal* s, lreal* c) {
+  /* 4 n u is exact (n a power of two), so fma(4n, u, .) rounds the same sums
+   * as 4 n u + . would */
+  const lreal m = AW_LSPLAT(AW_R(4.0) * n);
+  lreal t = AW_FMA(m, u, AW_LSPLAT(AW_ROUND_MAGIC)); /* k = t - magic: rint(4nu) */
   lreal k = t - AW_ROUND_MAGIC;
-  lreal f = AW_FMA(AW_LSPLAT(AW_R(4.0)), u, -k); /* 4u - k: exact, in [-1/2, 1/2] */
+  lreal f = AW_FMA(m, u, -k); /* 4nu - k: exact, in [-1/2, 1/2] */
   lreal w = f * f;
   /* sin(pi f / 2) = f S(w) and cos(pi f / 2) = 1 + w C(w): polynomials in
    * the exact reduced argument f itself (no rounded r = f pi/2), fitted
@@ -100,6 +105,8 @@ AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) {
   AW_QUADRANT_SELECT(t, sr, cr, s, c);
 }
 #endif /* AW_NATIVE_MATH */
+
+AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) { aw_sincos2pi_n(u, AW_R(1.0), s, c); }
 
 /* ------------------------------------------------------------ scalar log */
 
