@@ -20,6 +20,8 @@
 # accuracy: build the program, then bench/gpu/accuracy_fig3.sh on the first CUDA device: the
 # cheapest method and step for Figure 3 at max|dE| <= 1e-8 and what integrator.step = "auto"
 # chooses, each timed on the whole 1e8 (issue 16 target 5, issue 18; docs/accuracy.md).
+# float: build the program, then bench/gpu/float_map.sh on the first CUDA device: Figure 3 in double
+# and in float, timed, and the maps compared by the chi-square test (issue 16 target 6).
 # Needs .device-deps/ (see docs/gpu.md): Debian packages the image lacks and
 # ../shared/gpu/device-setup.sh. Results go to $OUT (default ./gpu-out).
 set -uo pipefail
@@ -43,7 +45,7 @@ fi
 stamp "build"
 targets=""
 [ "$mode" = bench ] && targets="--target arnoldweb-cli arnoldweb_bench"
-[ "$mode" = accuracy ] && targets="--target arnoldweb-cli"
+[ "$mode" = accuracy ] || [ "$mode" = float ] && targets="--target arnoldweb-cli"
 if ! cmake --build build-gpu -j"$(nproc)" $targets >>"$OUT/build.txt" 2>&1; then
   grep -E "error|Error" -A4 "$OUT/build.txt" | head -60; exit 1
 fi
@@ -57,6 +59,13 @@ if [ "$mode" = accuracy ]; then
   timeout 560 bash bench/gpu/accuracy_fig3.sh build-gpu/arnoldweb "$CUDA0" "$OUT/accuracy" "${AW_ACC_TARGETS:-1e-8}" ${AW_ACC_METHODS:-}
   stamp "done"
   (cd "$OUT" && tar czf /tmp/results.tgz --exclude=results.tgz . && mv /tmp/results.tgz results.tgz && rm -rf accuracy)
+  exit 0
+fi
+if [ "$mode" = float ]; then
+  stamp "float where it is enough: Figure 3 in double and float, maps compared"
+  CUDA0=$(build-gpu/arnoldweb devices --json | python3 -c "import json,sys; print(next(d['id'] for d in json.load(sys.stdin) if d['id'].startswith('cuda')))")
+  timeout 500 bash bench/gpu/float_map.sh build-gpu/arnoldweb "$CUDA0" /tmp/aw-float "${AW_FLOAT_N:-100000000}"
+  stamp "done"
   exit 0
 fi
 if [ "$mode" != bench ]; then
@@ -131,6 +140,15 @@ if [ -n "$CUDA0" ]; then
     ARNOLDWEB_NVRTC_OPTIONS="-DAW_CUDA_MIN_BLOCKS=$mb" timeout $(left 40) $B --devices "$CUDA0" --sizes 4194304 \
       --steps 2000 --precision double,float --variants default --no-baselines --repeat 3 --no-plot \
       --out "$BW/minblocks$mb" 2>&1 | grep -E "^\| cuda" | sort -u | sed "s/^/min_blocks=$mb /"
+  done
+fi
+OCL0=$(echo "$GPUS" | tr , '\n' | grep '^opencl' | head -1)
+if [ -n "$OCL0" ]; then
+  stamp "trajectories per work-item (ARNOLDWEB_OPENCL_LANES) 1, 2, 4 on $OCL0 (N = 4194304, 2000 steps)"
+  for ln in 1 2 4; do
+    ARNOLDWEB_OPENCL_LANES=$ln timeout $(left 40) $B --devices "$OCL0" --sizes 4194304 --steps 2000 \
+      --precision double,float --variants default --no-baselines --repeat 3 --no-plot \
+      --out "$BW/lanes$ln" 2>&1 | grep -E "^\| opencl" | sort -u | sed "s/^/lanes=$ln /"
   done
 fi
 if [ -n "$CUDA0" ] && command -v ncu >/dev/null; then
