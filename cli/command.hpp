@@ -67,6 +67,7 @@ void add_run_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
 void add_keys_command(CLI::App& app, Action& action);
 void add_render_command(CLI::App& app, Action& action);
+void add_compare_command(CLI::App& app, Action& action);
 void add_accuracy_command(CLI::App& app, Action& action);
 
 }  // namespace arnoldweb::cli

@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   add_bench_command(app, action);
   add_keys_command(app, action);
   add_render_command(app, action);
+  add_compare_command(app, action);
   add_accuracy_command(app, action);
 
   // an unknown command is named (CLI11 would only say that one is required)

@@ -118,7 +118,7 @@ TEST_SUITE("cli") {
     CHECK(awtest::run_cli("check " + dir + "/scene.toml", &out) == 0);
     CHECK(contains(out, "effects      velocity_map, energy_error"));
     CHECK(contains(out, "work"));
-    for (const char* cmd : {"", "devices ", "methods ", "check ", "run ", "keys "}) {
+    for (const char* cmd : {"", "devices ", "methods ", "check ", "run ", "keys ", "compare "}) {
       CAPTURE(cmd);
       CHECK(awtest::run_cli(std::string(cmd) + "--help", &out) == 0);
       CHECK(contains(out, "Usage"));

@@ -152,6 +152,33 @@ TEST_SUITE("output") {
   }
 #endif
 
+  TEST_CASE("read_saved_maps gives back the maps of an output directory, or names what is missing") {
+    const Plan p = small_plan();
+    const Result& r = small_result();
+    const std::string dir = awtest::temp_dir("saved-maps") + "/out";
+    write_outputs(p, r, dir, {});
+    const SavedMaps s = read_saved_maps(dir);
+    CHECK(s.map == r.map);
+    CHECK(s.nside == 16);
+    CHECK(s.zoom == r.zoom);
+    CHECK(s.zoom_resolution == 32);
+    CHECK(s.frames.empty());
+    CHECK(s.trajectories == 400);
+    CHECK(s.binned == r.binned);
+    CHECK(s.seed == std::optional<std::uint64_t>(p.scene.seed));
+    CHECK(s.map_file == dir + "/map.h5");
+    CHECK_THROWS_WITH_AS(read_saved_maps(dir + "/nothing-here"), doctest::Contains("nothing-here: no such directory"),
+                         OutputError);
+    const std::string missing = dir + "/map.h5: missing", broken = dir + "/map.h5: cannot open it",
+                      no_summary = dir + "/summary.json: cannot read it";
+    fs::remove(dir + "/map.h5");
+    CHECK_THROWS_WITH_AS(read_saved_maps(dir), doctest::Contains(missing.c_str()), OutputError);
+    std::ofstream(dir + "/map.h5") << "not HDF5";
+    CHECK_THROWS_WITH_AS(read_saved_maps(dir), doctest::Contains(broken.c_str()), OutputError);
+    fs::remove(dir + "/summary.json");
+    CHECK_THROWS_WITH_AS(read_saved_maps(dir), doctest::Contains(no_summary.c_str()), OutputError);
+  }
+
   TEST_CASE("an existing output directory is refused without force; with it only arnoldweb's own is replaced") {
     const Plan p = small_plan();
     OutputOptions force;

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -131,6 +132,23 @@ void render_figure_png(const std::string& path, const Plan& plan, const Result& 
 // has no pictures or the scene none); returns the path written, or "".
 std::string write_figure(const std::string& dir, const Plan& plan, const Result& result,
                          const std::vector<FigurePanel>& panels);
+
+// The maps of an output directory written earlier, read back from its
+// summary.json and map.h5 (docs/outputs.md).
+struct SavedMaps {
+  std::string summary_file, map_file;     // <dir>/summary.json, <dir>/map.h5
+  std::uint64_t trajectories = 0, binned = 0;  // from summary.json
+  std::optional<std::uint64_t> seed;     // the run's ensemble.seed (absent: not recorded)
+  int nside = 0;                          // of map and frames (0: the run made no velocity map)
+  std::vector<std::uint64_t> map;         // RING order, 12 nside^2 counts (all frames)
+  std::vector<std::vector<std::uint64_t>> frames;  // one map per frame (observe.frames)
+  int zoom_resolution = 0;                // R (0: no zoom)
+  std::vector<std::uint64_t> zoom;        // R x R counts, row y then column x
+};
+// OutputError naming the directory or the file that is missing, unreadable or
+// inconsistent (a map whose size is not 12 nside^2). A run with a zoom but no
+// velocity map gives an empty map, one without either has no map.h5 (an error).
+SavedMaps read_saved_maps(const std::string& dir);
 
 // Draws the pictures of an output directory written earlier (from its
 // summary.json and map.h5; e.g. a GPU node's run, on a machine with cairo),

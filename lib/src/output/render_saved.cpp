@@ -1,7 +1,5 @@
 // arnoldweb: pictures of a saved run: the scene and counts come back from
 // summary.json, the maps from map.h5.
-#include <hdf5.h>
-
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -10,24 +8,12 @@
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/output.hpp"
 #include "output/pictures.hpp"
+#include "output/saved_run.hpp"
 
 namespace arnoldweb {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::vector<std::uint64_t> read_counts(hid_t file, const char* name, const std::string& path) {
-  std::vector<std::uint64_t> v;
-  if (H5Lexists(file, name, H5P_DEFAULT) <= 0) return v;
-  const hid_t d = H5Dopen2(file, name, H5P_DEFAULT);
-  const hid_t space = H5Dget_space(d);
-  v.resize(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
-  const herr_t rc = H5Dread(d, H5T_NATIVE_UINT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
-  H5Sclose(space);
-  H5Dclose(d);
-  if (rc < 0) throw OutputError(path, std::string("cannot read ") + name);
-  return v;
-}
 
 struct Saved {
   Plan plan;
@@ -35,15 +21,8 @@ struct Saved {
 };
 
 Saved load(const std::string& dir) {
+  const nlohmann::json j = detail::read_summary(dir);
   const std::string summary_path = dir + "/summary.json";
-  std::ifstream in(summary_path);
-  if (!in) throw OutputError(summary_path, "cannot read it (is this an arnoldweb output directory?)");
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in);
-  } catch (const std::exception& e) {
-    throw OutputError(summary_path, std::string("not valid JSON: ") + e.what());
-  }
   Saved s;
   s.plan = make_plan(parse_scene(j.at("scene_toml").get<std::string>(), summary_path));
   Result& r = s.result;
@@ -52,18 +31,7 @@ Saved load(const std::string& dir) {
   r.binned = j.at("binned").get<std::uint64_t>();
   r.device.id = j.at("device").at("id").get<std::string>();
   r.device.name = j.at("device").at("name").get<std::string>();
-  const std::string h5 = dir + "/map.h5";
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const hid_t f = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (f < 0) throw OutputError(h5, "cannot open it");
-  r.map = read_counts(f, "map", h5);
-  const auto frames = read_counts(f, "frames", h5);
-  r.zoom = read_counts(f, "zoom", h5);
-  H5Fclose(f);
-  const std::size_t npix = r.map.size();
-  for (std::size_t k = 0; npix && k * npix < frames.size(); ++k)
-    r.frames.emplace_back(frames.begin() + static_cast<std::ptrdiff_t>(k * npix),
-                          frames.begin() + static_cast<std::ptrdiff_t>((k + 1) * npix));
+  detail::read_map_h5(dir, r);
   return s;
 }
 
