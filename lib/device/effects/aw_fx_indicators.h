@@ -32,11 +32,10 @@ AW_FN real aw_log_or_nan(real x) { return (x > AW_R(0.0) && x - x == AW_R(0.0)) 
 
 AW_FN void aw_store_indicators(aw_config cfg, AW_GLOBAL real* out, aw_u64 rec, const aw_tangent* t, int j, int ok,
                                AW_CONSTANT aw_rparams* rp) {
-  real l2[AW_LANES], mx[AW_LANES], s1[AW_LANES], ys[AW_LANES], cv[AW_LANES];
+  real l2[AW_LANES], mx[AW_LANES], ys[AW_LANES], cv[AW_LANES];
   real qx[AW_LANES], qy[AW_LANES], qz[AW_LANES], px[AW_LANES], py[AW_LANES], pz[AW_LANES];
   AW_STORE_LANES(t->log2w, l2);
   AW_STORE_LANES(t->max_n2, mx);
-  AW_STORE_LANES(t->s1, s1);
   AW_STORE_LANES(t->ysum, ys);
   AW_STORE_LANES(t->cov, cv);
   AW_STORE_LANES(t->qx, qx);
