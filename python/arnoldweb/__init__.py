@@ -23,7 +23,7 @@ from ._scene import Scene
 __version__: str = _core.__version__
 
 __all__ = ["Scene", "Result", "run", "accuracy", "devices", "methods", "scene_keys", "backend_problems",
-           "default_device", "pixel_directions", "resonances", "Error", "SceneError", "DeviceError", "BuildError", "OutputError",
+           "default_device", "pixel_directions", "resonances", "compare_maps", "Error", "SceneError", "DeviceError", "BuildError", "OutputError",
            "OutputRefused", "COUNTER_NAMES", "INDICATOR_NAMES", "__version__"]
 
 
@@ -61,6 +61,19 @@ def resonances(max_order: int) -> list:
     """The resonances m·P = 0 with max |m_i| <= max_order, lowest order first, as dicts
     (m, order, label): each is the great circle of directions P with m·P = 0."""
     return _core.resonances(max_order)
+
+
+def compare_maps(a, b, min_count: float = 5) -> dict:
+    """Are two count maps (e.g. ``result.map`` of two runs) samples of the same distribution? The
+    two-sample chi-square test of ``arnoldweb compare`` (docs/outputs.md), for maps with different
+    totals: bins with fewer than ``min_count`` counts in both together are pooled into one bin.
+    Returns a dict: chi2, dof, chi2_per_dof, p_value, total_a, total_b, bins, used_bins,
+    pooled_bins, empty_bins. Runs of the same seed are not independent samples (p comes out too
+    large). ValueError for maps of different sizes, an empty map or one without counts."""
+    import numpy as np
+
+    return _core.compare_maps(np.ascontiguousarray(a, dtype=np.uint64), np.ascontiguousarray(b, dtype=np.uint64),
+                              float(min_count))
 
 
 def default_device() -> str:

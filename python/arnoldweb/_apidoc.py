@@ -49,8 +49,8 @@ def _entry(title: str, doc: str) -> str:
 def markdown() -> str:
     import arnoldweb as aw
     out = ["### Functions", ""]
-    for name in ("run", "accuracy", "devices", "methods", "scene_keys", "backend_problems", "default_device",
-                 "pixel_directions", "resonances"):
+    # every function the package exports, in the order of __all__ (a new one cannot be missed)
+    for name in [n for n in aw.__all__ if inspect.isfunction(getattr(aw, n))]:
         fn = getattr(aw, name)
         out.append(_entry("arnoldweb." + _signature(name, fn), _doc(fn)))
     for cls in (aw.Scene, aw.Result):

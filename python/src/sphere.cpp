@@ -1,5 +1,6 @@
 // Geometry on the sphere of directions (sphere.hpp): HEALPix RING pixel
-// centres, as the kernels bin them, and the resonance circles m.P = 0.
+// centres, as the kernels bin them, and the resonance circles m.P = 0; the
+// two-sample chi-square test of two maps (analysis.hpp).
 #include "bindings.hpp"
 
 #include <nanobind/ndarray.h>
@@ -34,6 +35,30 @@ nb::list resonances(int max_order) {
   return out;
 }
 
+using Counts = nb::ndarray<const std::uint64_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+
+nb::dict compare_maps(Counts a, Counts b, double min_count) {
+  const std::vector<std::uint64_t> va(a.data(), a.data() + a.shape(0)), vb(b.data(), b.data() + b.shape(0));
+  arnoldweb::MapComparison c;
+  try {
+    c = arnoldweb::compare_maps(va, vb, min_count);
+  } catch (const std::invalid_argument& e) {
+    throw nb::value_error(e.what());
+  }
+  nb::dict d;
+  d["chi2"] = c.chi2;
+  d["dof"] = c.dof;
+  d["chi2_per_dof"] = c.chi2_per_dof();
+  d["p_value"] = c.p_value;
+  d["total_a"] = c.total_a;
+  d["total_b"] = c.total_b;
+  d["bins"] = c.bins;
+  d["used_bins"] = c.used_bins;
+  d["pooled_bins"] = c.pooled_bins;
+  d["empty_bins"] = c.empty_bins;
+  return d;
+}
+
 }  // namespace
 
 void bind_sphere(nb::module_& m) {
@@ -43,6 +68,8 @@ void bind_sphere(nb::module_& m) {
   m.def("resonances", &resonances, nb::arg("max_order"),
         "The resonances m.P = 0 with max |m_i| <= max_order, lowest order first, as dicts (m, order, label); "
         "each is the great circle of directions P with m.P = 0.");
+  m.def("compare_maps", &compare_maps, nb::arg("a"), nb::arg("b"), nb::arg("min_count") = 5.0,
+        "The two-sample chi-square test of two count maps of the same size (docs/outputs.md).");
 }
 
 }  // namespace awpy

@@ -182,3 +182,23 @@ def test_indicators_on_a_lonlat_grid_have_its_shape(small_scene):
     r = aw.run(small_scene)
     assert r.indicators.shape == (4, 6)  # [n2][n1], as in indicators.h5
     assert np.all(np.isfinite(r.indicators["lyapunov"]))
+
+
+def test_compare_maps_float_against_double(small_scene):
+    """compare_maps: two independent runs (float, double) agree; a map against itself with half
+    its pixels doubled does not; bad input is a ValueError."""
+    import numpy as np
+    s = small_scene.set("ensemble.trajectories", 20000).set("observe.velocity_map.nside", 4)
+    double = aw.run(s.copy().set("ensemble.seed", 1))
+    float_ = aw.run(s.copy().set("ensemble.seed", 2).set("integrator.precision", "float"))
+    same = aw.compare_maps(double.map, float_.map)
+    assert same["total_a"] == double.map.sum() and same["total_b"] == float_.map.sum()
+    assert same["dof"] == same["used_bins"] - 1 and same["bins"] == 192
+    assert same["p_value"] > 1e-3, same
+    assert aw.compare_maps(double.map, double.map)["chi2"] == 0.0
+    skewed = np.array(double.map)
+    skewed[:96] *= 2
+    different = aw.compare_maps(double.map, skewed)
+    assert different["p_value"] < 1e-6, different
+    with pytest.raises(ValueError, match="different sizes"):
+        aw.compare_maps(double.map, double.map[:-1])
