@@ -30,12 +30,18 @@ AW_FN aw_seibert_trig aw_seibert_trig_at(lreal ux, lreal uy, lreal uz) {
   return t;
 }
 
+/* F from the sincos at s->u into s->f: the one place the force is written,
+ * so aw_model_force and aw_model_force_hessian give it the same bits. */
+AW_FN void aw_seibert_force_of(aw_lstate* s, const aw_seibert_trig* t) {
+  lreal sxcy = t->sx * t->cy, cxsy = t->cx * t->sy, cxcy = t->cx * t->cy;
+  s->fx = AW_FMA(sxcy, t->c2, sxcy);
+  s->fy = AW_FMA(cxsy, t->c2, cxsy);
+  s->fz = (cxcy + cxcy) * t->s2;
+}
+
 AW_FN void aw_model_force(aw_lstate* s, AW_CONSTANT aw_rparams* rp) {
   const aw_seibert_trig t = aw_seibert_trig_at(s->ux, s->uy, s->uz);
-  lreal sxcy = t.sx * t.cy, cxsy = t.cx * t.sy, cxcy = t.cx * t.cy;
-  s->fx = AW_FMA(sxcy, t.c2, sxcy);
-  s->fy = AW_FMA(cxsy, t.c2, cxsy);
-  s->fz = (cxcy + cxcy) * t.s2;
+  aw_seibert_force_of(s, &t);
 }
 
 /* The force and the Hessian of V (d^2V / dx_i dx_j, radians) at s->u, from
@@ -46,10 +52,8 @@ AW_FN void aw_model_force(aw_lstate* s, AW_CONSTANT aw_rparams* rp) {
  * (c2, s2: cos 2z, sin 2z). */
 AW_FN void aw_model_force_hessian(aw_lstate* s, AW_CONSTANT aw_rparams* rp, lreal* hess) {
   const aw_seibert_trig t = aw_seibert_trig_at(s->ux, s->uy, s->uz);
+  aw_seibert_force_of(s, &t);
   lreal sxcy = t.sx * t.cy, cxsy = t.cx * t.sy, cxcy = t.cx * t.cy, sxsy = t.sx * t.sy;
-  s->fx = AW_FMA(sxcy, t.c2, sxcy);
-  s->fy = AW_FMA(cxsy, t.c2, cxsy);
-  s->fz = (cxcy + cxcy) * t.s2;
   hess[0] = -AW_FMA(cxcy, t.c2, cxcy);
   hess[1] = hess[0];
   hess[2] = AW_R(-4.0) * (cxcy * t.c2);
