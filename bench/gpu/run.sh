@@ -50,11 +50,14 @@ if ! cmake --build build-gpu -j"$(nproc)" $targets >>"$OUT/build.txt" 2>&1; then
   grep -E "error|Error" -A4 "$OUT/build.txt" | head -60; exit 1
 fi
 build-gpu/arnoldweb devices | tee "$OUT/devices.txt"
+first_cuda() {  # the id of the first CUDA device
+  build-gpu/arnoldweb devices --json | python3 -c "import json,sys; print(next(d['id'] for d in json.load(sys.stdin) if d['id'].startswith('cuda')))"
+}
 
 ctest_rc=-; parity_rc=-
 if [ "$mode" = accuracy ]; then
   stamp "accuracy for less: Figure 3 at max|dE| <= ${AW_ACC_TARGETS:-1e-8}"
-  CUDA0=$(build-gpu/arnoldweb devices --json | python3 -c "import json,sys; print(next(d['id'] for d in json.load(sys.stdin) if d['id'].startswith('cuda')))")
+  CUDA0=$(first_cuda)
   nproc; grep -m1 "model name" /proc/cpuinfo
   timeout 560 bash bench/gpu/accuracy_fig3.sh build-gpu/arnoldweb "$CUDA0" "$OUT/accuracy" "${AW_ACC_TARGETS:-1e-8}" ${AW_ACC_METHODS:-}
   stamp "done"
@@ -63,7 +66,7 @@ if [ "$mode" = accuracy ]; then
 fi
 if [ "$mode" = float ]; then
   stamp "float where it is enough: Figure 3 in double and float, maps compared"
-  CUDA0=$(build-gpu/arnoldweb devices --json | python3 -c "import json,sys; print(next(d['id'] for d in json.load(sys.stdin) if d['id'].startswith('cuda')))")
+  CUDA0=$(first_cuda)
   timeout 500 bash bench/gpu/float_map.sh build-gpu/arnoldweb "$CUDA0" /tmp/aw-float "${AW_FLOAT_N:-100000000}"
   stamp "done"
   exit 0
