@@ -51,7 +51,8 @@ std::string summary_json(const Plan& plan, const Result& r, const std::vector<st
   j["digests"] = {{"algorithm", "XXH3-128"},
                   {"map", digest_map(r)},
                   {"initial_states", digest_initial_states(r)},
-                  {"final_states", digest_final_states(r)}};
+                  {"final_states", digest_final_states(r)},
+                  {"indicators", digest_indicators(r)}};
   j["device"] = {{"id", r.device.id},
                  {"backend", r.device.backend},
                  {"name", r.device.name},
