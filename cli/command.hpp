@@ -11,7 +11,7 @@
 
 #include <optional>
 
-#include "arnoldweb/job.hpp"
+#include "arnoldweb/run.hpp"
 #include "arnoldweb/output.hpp"
 #include "arnoldweb/scene.hpp"
 

@@ -77,12 +77,12 @@ class Result:
 
     def _make_states(self) -> Optional[dict]:
         out = {}
-        init = self._record.initial_states(self._part)
+        init = self._record.records(self._part, "initial_states", False)
         if init is not None:
             out["initial"] = {"position_turns": init[:, 0:3], "momentum": init[:, 3:6]}
-        fin = self._record.final_states(self._part)
+        fin = self._record.records(self._part, "final_states", False)
         if fin is not None:
-            ints = self._record.final_ints(self._part)
+            ints = self._record.records(self._part, "final_states", True)
             out["final"] = {
                 "position_turns": fin[:, 0:3],
                 "winding": ints[:, 0:3],
@@ -91,6 +91,13 @@ class Result:
                 "position": 2 * np.pi * (ints[:, 0:3].astype(np.float64) + fin[:, 0:3]),
             }
         return out or None
+
+    @property
+    def outputs(self) -> Dict[str, Dict[str, np.ndarray]]:
+        """Every per-trajectory output of the run as its files hold it (docs/outputs.md, the
+        output table): ``{output: {dataset: array}}``, e.g. ``result.outputs["final_states"]["momentum"]``
+        (shape (n, 3)) or ``result.outputs["indicators"]["fli"]`` (the grid's shape). Copies."""
+        return self._cached("outputs", lambda: self._record.output_datasets(self._part))
 
     # --------------------------------------------------------------- numbers
     @property
@@ -113,7 +120,7 @@ class Result:
         return self._cached("indicators", self._make_indicators)
 
     def _make_indicators(self) -> Optional[np.ndarray]:
-        records = self._record.indicators(self._part)
+        records = self._record.records(self._part, "indicators", False)
         if records is None:
             return None
         layout = self._record.indicator_layout(self._part)

@@ -12,7 +12,7 @@
 #include "aw_params.h"
 #include "../physics/expression_cases.hpp"
 #include "physics/expression/expression_model.hpp"
-#include "plan/kernel_params.hpp"
+#include "plan/plan_params.hpp"
 #include "support.hpp"
 
 using namespace arnoldweb;
@@ -47,7 +47,8 @@ Plan as_expression(const Scene& scene, const std::string& text) {
   p.kernel.model = ex::kExpressionModelId;
   p.kernel.model_source = m.device_header;
   auto& reals = detail::edit_params(p).reals;
-  ex::fill_model_slots(m, {1, 1, 1}, {0, 0, 0}, reals.model, AW_MAX_MODEL_PARAMS);
+  for (int i = 0; i < 3; ++i) reals.model[i] = 1;  // a = (1, 1, 1), b = 0: T = |P|^2/2
+  ex::fill_parameter_slots(m, reals.model, AW_MAX_MODEL_PARAMS);
   return p;
 }
 
@@ -67,20 +68,20 @@ TEST_SUITE("expression-opencl") {
     const Result builtin = awtest::run_on(dev, make_plan(scene));
     const Result expr = awtest::run_on(dev, as_expression(scene, awtest::paper_potential()));
     REQUIRE(expr.completed == builtin.completed);
-    REQUIRE(expr.final_r.size() == builtin.final_r.size());
+    REQUIRE(expr.reals("final_states").size() == builtin.reals("final_states").size());
     CHECK(expr.flagged() == builtin.flagged());
     // initial states: the same draws, V and the speed differ in the last bits
     double worst_init = 0;
-    for (std::size_t i = 0; i < builtin.initial_r.size(); ++i)
-      worst_init = std::max(worst_init, std::fabs(expr.initial_r[i] - builtin.initial_r[i]));
+    for (std::size_t i = 0; i < builtin.reals("initial_states").size(); ++i)
+      worst_init = std::max(worst_init, std::fabs(expr.reals("initial_states")[i] - builtin.reals("initial_states")[i]));
     CHECK(worst_init < 1e-13);
     // final states after 500 steps: round-off grows with the flow's divergence; most stay close
     std::size_t close = 0;
-    const std::size_t n = builtin.final_r.size() / AW_STATE_REALS;
+    const std::size_t n = builtin.reals("final_states").size() / AW_STATE_REALS;
     for (std::size_t t = 0; t < n; ++t) {
       double d = 0;
       for (std::size_t k = 0; k < AW_STATE_REALS; ++k)
-        d = std::max(d, std::fabs(expr.final_r[t * AW_STATE_REALS + k] - builtin.final_r[t * AW_STATE_REALS + k]));
+        d = std::max(d, std::fabs(expr.reals("final_states")[t * AW_STATE_REALS + k] - builtin.reals("final_states")[t * AW_STATE_REALS + k]));
       if (d < 1e-8) ++close;
     }
     CHECK(close >= n * 99 / 100);
@@ -89,7 +90,7 @@ TEST_SUITE("expression-opencl") {
     // the scene's route (model.kind = "expression") compiles and runs exactly this
     const Result scene_route = awtest::run_on(
         dev, make_plan(small_scene({"model.kind=\"expression\"", awtest::set("model.potential", awtest::paper_potential())})));
-    CHECK(awtest::first_difference(scene_route.final_r, expr.final_r) == -1);
+    CHECK(awtest::first_difference(scene_route.reals("final_states"), expr.reals("final_states")) == -1);
     CHECK(digest_map(scene_route) == digest_map(expr));
     MESSAGE("expression vs built-in: max |dE| " << expr.energy.max << " vs " << builtin.energy.max << "; "
                                                 << close << " of " << n << " final states within 1e-8");

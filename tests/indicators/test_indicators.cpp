@@ -61,7 +61,7 @@ struct Indicators {
   double fli, megno, megno_lyapunov, lyapunov;
 };
 Indicators indicators_of(const Result& r, std::size_t t = 0) {
-  const double* v = &r.indicators[t * AW_IND_REALS];
+  const double* v = &r.reals("indicators")[t * AW_IND_REALS];
   return {v[AW_IND_FLI], v[AW_IND_MEGNO], v[AW_IND_MEGNO_LYAPUNOV], v[AW_IND_LYAPUNOV]};
 }
 
@@ -233,8 +233,8 @@ TEST_SUITE("indicators") {
     CHECK(b.fli > 20);
     // an independent estimate: two trajectories 1e-8 apart, renormalised every T
     const Plan plan = make_plan(s200);
-    REQUIRE(r200.initial_r.size() == AW_STATE_REALS);
-    const double lambda2 = two_trajectory_lyapunov(plan, r200.initial_r.data(), unit_w0(s200), 200);
+    REQUIRE(r200.reals("initial_states").size() == AW_STATE_REALS);
+    const double lambda2 = two_trajectory_lyapunov(plan, r200.reals("initial_states").data(), unit_w0(s200), 200);
     MESSAGE("two trajectories: lambda = " << lambda2);
     CHECK(lambda2 > 0.1);
     CHECK(b.lyapunov == doctest::Approx(lambda2).epsilon(0.01));       // the same quantity, to 1 %
@@ -271,10 +271,10 @@ TEST_SUITE("indicators") {
     const Plan plan = make_plan(s);
     REQUIRE(plan.scene.trajectories == 768u);
     const Result r = awtest::run_on("cpu", plan);
-    REQUIRE(r.initial_r.size() == 768u * AW_STATE_REALS);
+    REQUIRE(r.reals("initial_states").size() == 768u * AW_STATE_REALS);
     const double v = 2 * std::cos(0.5) * std::cos(1.0) * std::cos(2.0) * std::cos(2.0);
     for (std::size_t i = 0; i < 768; ++i) {
-      const double* st = &r.initial_r[i * AW_STATE_REALS];
+      const double* st = &r.reals("initial_states")[i * AW_STATE_REALS];
       const double p = std::sqrt(st[3] * st[3] + st[4] * st[4] + st[5] * st[5]);
       CHECK(p == doctest::Approx(std::sqrt(2 * (15 - v))).epsilon(1e-13));
       CHECK(vec2pix_ring(8, {st[3], st[4], st[5]}) == i);
@@ -298,10 +298,10 @@ TEST_SUITE("indicators") {
       lyapunov = true
     )");
     const Result r = awtest::run_on("cpu", make_plan(s));
-    REQUIRE(r.initial_r.size() == 12u * AW_STATE_REALS);
+    REQUIRE(r.reals("initial_states").size() == 12u * AW_STATE_REALS);
     for (std::size_t j = 0; j < 3; ++j)
       for (std::size_t i = 0; i < 4; ++i) {
-        const double* st = &r.initial_r[(j * 4 + i) * AW_STATE_REALS];
+        const double* st = &r.reals("initial_states")[(j * 4 + i) * AW_STATE_REALS];
         const double lon = std::atan2(st[4], st[3]) * 180 / M_PI;
         const double lat = std::atan2(st[5], std::hypot(st[3], st[4])) * 180 / M_PI;
         CHECK(lon == doctest::Approx(41 + 2.0 * i).epsilon(1e-12));
@@ -321,10 +321,10 @@ TEST_SUITE("indicators") {
       megno = true
     )");
     const Result rp = awtest::run_on("cpu", make_plan(plane));
-    REQUIRE(rp.initial_r.size() == 10u * AW_STATE_REALS);
+    REQUIRE(rp.reals("initial_states").size() == 10u * AW_STATE_REALS);
     for (std::size_t j = 0; j < 2; ++j)
       for (std::size_t i = 0; i < 5; ++i) {
-        const double* st = &rp.initial_r[(j * 5 + i) * AW_STATE_REALS];
+        const double* st = &rp.reals("initial_states")[(j * 5 + i) * AW_STATE_REALS];
         CHECK(st[5] == doctest::Approx(0.1 + 0.2 * i));  // axes[0] = p_z over range1
         CHECK(st[3] == doctest::Approx(2.5 + 1.0 * j));  // axes[1] = p_x over range2
         CHECK(st[4] == 7);                               // the fixed one
@@ -441,9 +441,9 @@ TEST_SUITE("indicators") {
     std::vector<hsize_t> dims;
     const auto fli = read_doubles(dir + "/indicators.h5", "fli", &dims);
     CHECK(dims == std::vector<hsize_t>{4, 6});  // rows = the second momentum
-    for (std::size_t t = 0; t < 24; ++t) CHECK(fli[t] == r.indicators[t * AW_IND_REALS + AW_IND_FLI]);
+    for (std::size_t t = 0; t < 24; ++t) CHECK(fli[t] == r.reals("indicators")[t * AW_IND_REALS + AW_IND_FLI]);
     const auto megno = read_doubles(dir + "/indicators.h5", "megno", &dims);
-    CHECK(megno[5] == r.indicators[5 * AW_IND_REALS + AW_IND_MEGNO]);
+    CHECK(megno[5] == r.reals("indicators")[5 * AW_IND_REALS + AW_IND_MEGNO]);
     const auto axis1 = read_doubles(dir + "/indicators.h5", "grid/axis1", &dims);
     CHECK(axis1 == std::vector<double>{2 + 1 / 12.0, 2 + 3 / 12.0, 2 + 5 / 12.0, 2 + 7 / 12.0, 2 + 9 / 12.0, 2 + 11 / 12.0});
     const auto axis2 = read_doubles(dir + "/indicators.h5", "grid/axis2", &dims);
@@ -527,15 +527,15 @@ TEST_SUITE("parity") {
       const Scene without = awtest::scene_from(toml, sets);
       const Result ref = awtest::run_scalar_core(make_plan(with));
       const Result plain = awtest::run_scalar_core(make_plan(without));
-      REQUIRE(ref.indicators.size() == 3000u * AW_IND_REALS);
-      CHECK(awtest::first_difference(ref.final_r, plain.final_r) == -1);
+      REQUIRE(ref.reals("indicators").size() == 3000u * AW_IND_REALS);
+      CHECK(awtest::first_difference(ref.reals("final_states"), plain.reals("final_states")) == -1);
       CHECK(ref.map == plain.map);
       for (const DeviceInfo& d : awtest::devices_under_test()) {
         CAPTURE(d.id);
         if (p == Precision::Double && !d.fp64) continue;
         const Result r = awtest::run_on(d.id, make_plan(with));
-        CHECK(awtest::first_difference(r.indicators, ref.indicators) == -1);
-        CHECK(awtest::first_difference(r.final_r, ref.final_r) == -1);
+        CHECK(awtest::first_difference(r.reals("indicators"), ref.reals("indicators")) == -1);
+        CHECK(awtest::first_difference(r.reals("final_states"), ref.reals("final_states")) == -1);
         CHECK(r.map == ref.map);
       }
     }

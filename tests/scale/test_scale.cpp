@@ -34,8 +34,8 @@ void check_same(const arnoldweb::Result& a, const arnoldweb::Result& b) {
   CHECK(a.completed == b.completed);
   CHECK(a.binned == b.binned);
   CHECK(arnoldweb::digest_map(a) == arnoldweb::digest_map(b));
-  CHECK(arnoldweb::digest_initial_states(a) == arnoldweb::digest_initial_states(b));
-  CHECK(arnoldweb::digest_final_states(a) == arnoldweb::digest_final_states(b));
+  CHECK(arnoldweb::digest_records(a, "initial_states") == arnoldweb::digest_records(b, "initial_states"));
+  CHECK(arnoldweb::digest_records(a, "final_states") == arnoldweb::digest_records(b, "final_states"));
   CHECK(a.zoom == b.zoom);
   CHECK(a.energy.log_hist == b.energy.log_hist);
   CHECK(a.energy.max == b.energy.max);
@@ -208,7 +208,7 @@ TEST_SUITE("scale") {
       explicit Failing(std::unique_ptr<arnoldweb::Backend> b) : b_(std::move(b)) {}
       const arnoldweb::DeviceInfo& info() const override { return b_->info(); }
       void prepare(const arnoldweb::Plan& p, std::uint64_t m) override { b_->prepare(p, m); }
-      void run_chunk(std::uint64_t, std::uint64_t, arnoldweb::ChunkOutput&) override {
+      void run_chunk(const arnoldweb::ChunkWork&, arnoldweb::ChunkOutput&) override {
         throw arnoldweb::DeviceError(b_->info().id, "", 0, "the device was lost");
       }
       std::vector<std::uint64_t> read_histograms() override { return b_->read_histograms(); }

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "arnoldweb/job.hpp"
+#include "arnoldweb/run.hpp"
 
 namespace arnoldweb {
 

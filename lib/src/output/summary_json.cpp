@@ -7,6 +7,7 @@
 
 #include "arnoldweb/output.hpp"
 #include "arnoldweb/version.hpp"
+#include "plan/output_table.hpp"
 
 namespace arnoldweb {
 namespace {
@@ -48,11 +49,8 @@ std::string summary_json(const Plan& plan, const Result& r, const std::vector<st
     j["energy_error"]["note"] = "max and mean over binned trajectories of max_t |E(t) - E(0)|; quantiles are "
                                 "upper edges of quarter-octave histogram bins over all trajectories";
   }
-  j["digests"] = {{"algorithm", "XXH3-128"},
-                  {"map", digest_map(r)},
-                  {"initial_states", digest_initial_states(r)},
-                  {"final_states", digest_final_states(r)},
-                  {"indicators", digest_indicators(r)}};
+  j["digests"] = {{"algorithm", "XXH3-128"}, {"map", digest_map(r)}};
+  for (const std::string& name : output_names()) j["digests"][name] = digest_records(r, name);
   j["device"] = {{"id", r.device.id},
                  {"backend", r.device.backend},
                  {"name", r.device.name},

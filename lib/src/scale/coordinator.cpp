@@ -5,8 +5,10 @@
 #include <stdexcept>
 
 #include "arnoldweb/errors.hpp"
+#include "plan/checks.hpp"
 #include "run/chunk_loop.hpp"
 #include "run/job_checkpoints.hpp"
+#include "run/part_run.hpp"
 #include "scale/messages.hpp"
 
 namespace arnoldweb::detail {
@@ -128,6 +130,14 @@ class PartCoordinator {
 
 JobResult coordinate_job(const Job& job, Transport& transport, const RunOptions& options, JobObserver* observer,
                          const DeviceInfo& device, const std::string& kernel) {
+  for (const JobPart& part : job.parts) {
+    require_states(part.plan);
+    if (part.plan.slices > 1 && transport.workers() > 1)
+      fail_at(part.plan.scene, "run.slice",
+              "time slices carry every trajectory's state from one slice to the next in one process: run a "
+              "sliced scene on one device (" + std::to_string(transport.workers()) +
+                  " were given; run.slice = 0 spreads a run over devices)");
+  }
   JobResult jr;
   std::unique_ptr<JobCheckpoints> cp;
   if (options.checkpoint && options.checkpoint->sink) cp = std::make_unique<JobCheckpoints>(job, *options.checkpoint);

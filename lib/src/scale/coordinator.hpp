@@ -9,7 +9,7 @@
 // assignment of chunks.
 #pragma once
 
-#include "arnoldweb/job.hpp"
+#include "arnoldweb/run.hpp"
 #include "scale/transport.hpp"
 
 namespace arnoldweb::detail {

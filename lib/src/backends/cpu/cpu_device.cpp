@@ -55,10 +55,6 @@ class HostMemory final : public DeviceMemory {
 
 HostMemory& host(DeviceMemory& m) { return static_cast<HostMemory&>(m); }
 const HostMemory& host(const DeviceMemory& m) { return static_cast<const HostMemory&>(m); }
-template <class T>
-T* ptr(DeviceMemory* m) {
-  return m ? static_cast<T*>(host(*m).data()) : nullptr;
-}
 
 class CpuDevice final : public ComputeDevice {
  public:
@@ -101,25 +97,18 @@ class CpuDevice final : public ComputeDevice {
     return s;
   }
 
-  void launch_ensemble(std::uint64_t first, std::uint64_t count, const LaunchShape&,
-                       const EnsembleBuffers& b) override {
+  void launch_ensemble(const LaunchRange& r, const LaunchShape&, const EnsembleBuffers& b) override {
     CpuChunk c;
     c.features = config_.features;
     c.stages = config_.stages;
     c.kick_first = config_.kick_first ? 1 : 0;
     c.gradient = config_.gradient ? 1 : 0;
     c.initial = config_.initial;
-    c.first = first;
-    c.end = first + count;
-    c.rp = host(*b.reals).data();
-    c.ip = host(*b.ints).data();
-    c.map = ptr<std::uint32_t>(b.counts);
-    c.counters = ptr<std::uint32_t>(b.counters);
-    c.initial_r = ptr<void>(b.initial_r);
-    c.final_r = ptr<void>(b.final_r);
-    c.final_i = ptr<std::int64_t>(b.final_i);
-    c.indicators = ptr<void>(b.indicators);
-    c.group_stats = ptr<void>(b.group_stats);
+    c.first = r.first;
+    c.end = r.first + r.count;
+    c.seg_first = r.seg_first;
+    c.seg_end = r.seg_end;
+    for (int i = 0; i < AW_BUF_COUNT; ++i) c.buffers[i] = b.at[i] ? host(*b.at[i]).data() : nullptr;
     kernel_(c);
   }
 
