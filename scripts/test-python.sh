@@ -32,8 +32,11 @@ python=${PYTHON:-python3}
 command -v "$python" >/dev/null 2>&1 || skip "no $python on PATH"
 "$python" -c 'import venv, ensurepip' 2>/dev/null || skip "$python has no venv/ensurepip module (Debian: python3-venv)"
 "$python" -m pip --version >/dev/null 2>&1 || skip "$python has no pip"
-"$python" -m pip download -q --no-deps -d "${TMPDIR:-/tmp}" pytest >/dev/null 2>&1 \
-  || skip "pip cannot reach PyPI for the build and test tools (no network?)"
+probe=$(mktemp -d "${TMPDIR:-/tmp}/arnoldweb-pypi.XXXXXX")
+reached=1
+"$python" -m pip download -q --no-deps -d "$probe" pytest >/dev/null 2>&1 || reached=0
+rm -rf "$probe"
+[ $reached = 1 ] || skip "pip cannot reach PyPI for the build and test tools (no network?)"
 
 start=$SECONDS
 mkdir -p build-python
@@ -55,7 +58,7 @@ pip=("$venv/bin/python" -m pip --disable-pip-version-check -q)
 install_start=$(date +%s.%N)
 "${pip[@]}" install "$wheel"
 install_end=$(date +%s.%N)
-echo "test-python: pip install $(basename "$wheel") into a fresh venv took $(echo "$install_end - $install_start" | bc) s"
+echo "test-python: pip install $(basename "$wheel") into a fresh venv took $(printf '%.1f' "$(echo "$install_end - $install_start" | bc)") s"
 "${pip[@]}" install pytest h5py matplotlib tqdm healpy nbclient nbformat ipykernel \
   || skip "pip could not install the test tools from PyPI (no network?)"
 

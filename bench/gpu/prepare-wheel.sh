@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Here (the Debian machine), before `bash bench/gpu/run.sh wheel` on the GPU
-# machine: builds the wheel for the GPU machine's python3 (3.12: cp312-abi3,
-# through pyenv's 3.12 or $PYTHON312) and this machine's, and downloads a
+# machine: builds the wheel for the GPU machine's python3 (3.12: cp312,
+# through pyenv's 3.12 or $PYTHON312), and downloads a
 # numpy wheel for 3.12 (the GPU machine reaches no package index), into
 # .device-deps/wheels/ (carried by the device tool: carry [".device-deps"]).
 set -euo pipefail

@@ -17,7 +17,7 @@ mkdir -p "$OUT"
 python=${PYTHON:-python3}
 echo "machine: $(. /etc/os-release && echo "$PRETTY_NAME"), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2), $(nproc) cores"
 echo "python: $("$python" -c 'import sys; print(sys.version.split()[0], sys.executable)')"
-tag=$("$python" -c 'import sys; v = sys.version_info; print("abi3" if v >= (3, 12) else f"cp{v[0]}{v[1]}-cp{v[0]}{v[1]}")')
+tag=$("$python" -c 'import sys; v = sys.version_info; print(f"cp{v[0]}{v[1]}-cp{v[0]}{v[1]}")')
 wheel=$(ls "$dir"/arnoldweb-*-"$tag"-*.whl 2>/dev/null | head -n 1)
 [ -n "$wheel" ] || { echo "wheel: no arnoldweb wheel for $tag in $dir (bench/gpu/prepare-wheel.sh)"; ls "$dir"; exit 1; }
 # NVIDIA's OpenCL driver, registered with the ICD loader (the image ships only PoCL's)
@@ -26,6 +26,8 @@ if [ ! -f /etc/OpenCL/vendors/nvidia.icd ]; then
     || echo "wheel: could not register NVIDIA's OpenCL driver"
 fi
 
+# what the wheel takes from the system (the manylinux policy's libraries; the rest is inside)
+echo "system libraries the wheel uses: $(ldconfig -p | grep -oE '(libX11\.so\.6|libXext\.so\.6|libXrender\.so\.1|libexpat\.so\.1|libz\.so\.1|libstdc\+\+\.so\.6) ' | sort -u | tr -d '\n')"
 venv=$(mktemp -d /tmp/aw-wheel-venv.XXXXXX)
 "$python" -m venv "$venv"
 t0=$(date +%s.%N)

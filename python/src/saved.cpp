@@ -4,7 +4,6 @@
 // computed here as summary.json's is, so the package can check the file.
 #include "bindings.hpp"
 
-#include <nanobind/ndarray.h>
 #include <nanobind/stl/string.h>
 
 #include <cstring>
@@ -12,11 +11,10 @@
 namespace awpy {
 namespace {
 
+// None for what the run did not make
 nb::object array_of(std::vector<std::uint64_t> values, std::initializer_list<std::size_t> shape) {
   if (values.empty()) return nb::none();
-  auto* data = new std::vector<std::uint64_t>(std::move(values));
-  nb::capsule owner(data, [](void* p) noexcept { delete static_cast<std::vector<std::uint64_t>*>(p); });
-  return nb::cast(nb::ndarray<nb::numpy, std::uint64_t>(data->data(), shape, owner));
+  return owned(std::move(values), shape);
 }
 
 nb::dict read_maps(const std::string& dir) {
