@@ -8,8 +8,11 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 dest=.device-deps/wheels
 mkdir -p "$dest"
-py312=${PYTHON312:-$(command -v python3.12 || echo "$HOME/.pyenv/versions/3.12.1/bin/python")}
-[ -x "$py312" ] || { echo "prepare-wheel: no Python 3.12 (set PYTHON312)" >&2; exit 2; }
+py312=""
+for p in ${PYTHON312:-} "$HOME"/.pyenv/versions/3.12*/bin/python python3.12; do
+  if "$p" -c 'import sys; assert sys.version_info[:2] == (3, 12)' 2>/dev/null; then py312=$p; break; fi
+done
+[ -n "$py312" ] || { echo "prepare-wheel: no Python 3.12 (set PYTHON312)" >&2; exit 2; }
 rm -f "$dest"/arnoldweb-*.whl
 WHEEL_DIR="$PWD/$dest" PYTHON="$py312" scripts/build-wheel.sh | tail -n 3
 python3 -m pip download -q --only-binary=:all: --python-version 3.12 --platform manylinux_2_28_x86_64 \

@@ -21,7 +21,7 @@ tag=$("$python" -c 'import sys; v = sys.version_info; print(f"cp{v[0]}{v[1]}-cp{
 wheel=$(ls "$dir"/arnoldweb-*-"$tag"-*.whl 2>/dev/null | head -n 1)
 [ -n "$wheel" ] || { echo "wheel: no arnoldweb wheel for $tag in $dir (bench/gpu/prepare-wheel.sh)"; ls "$dir"; exit 1; }
 # NVIDIA's OpenCL driver, registered with the ICD loader (the image ships only PoCL's)
-if [ ! -f /etc/OpenCL/vendors/nvidia.icd ]; then
+if [ ! -f /etc/OpenCL/vendors/nvidia.icd ] && ldconfig -p | grep -q libnvidia-opencl.so.1; then
   mkdir -p /etc/OpenCL/vendors && echo libnvidia-opencl.so.1 > /etc/OpenCL/vendors/nvidia.icd \
     || echo "wheel: could not register NVIDIA's OpenCL driver"
 fi
