@@ -55,10 +55,10 @@ venv=build-python/venv
 rm -rf "$venv"
 "$python" -m venv "$venv" || skip "$python -m venv failed"
 pip=("$venv/bin/python" -m pip --disable-pip-version-check -q)
-install_start=$(date +%s.%N)
+install_start=$(date +%s%N)
 "${pip[@]}" install "$wheel"
-install_end=$(date +%s.%N)
-echo "test-python: pip install $(basename "$wheel") into a fresh venv took $(printf '%.1f' "$(echo "$install_end - $install_start" | bc)") s"
+install_ms=$(( ($(date +%s%N) - install_start) / 1000000 ))
+echo "test-python: pip install $(basename "$wheel") into a fresh venv took $((install_ms / 1000)).$((install_ms % 1000 / 100)) s"
 "${pip[@]}" install pytest h5py matplotlib tqdm healpy nbclient nbformat ipykernel \
   || skip "pip could not install the test tools from PyPI (no network?)"
 
