@@ -22,6 +22,10 @@
 # chooses, each timed on the whole 1e8 (issue 16 target 5, issue 18; docs/accuracy.md).
 # float: build the program, then bench/gpu/float_map.sh on the first CUDA device: Figure 3 in double
 # and in float, timed, and the maps compared by the chi-square test (issue 16 target 6).
+# wheel: no build: the binary wheel built on the Debian machine
+# (bench/gpu/prepare-wheel.sh) installed into a fresh venv, timed, and a scene
+# from Python on CUDA, NVIDIA OpenCL and cpu next to the wheel's CLI
+# (bench/gpu/wheel.sh; issue 28).
 # Needs .device-deps/ (see docs/gpu.md): Debian packages the image lacks and
 # ../shared/gpu/device-setup.sh. Results go to $OUT (default ./gpu-out).
 set -uo pipefail
@@ -31,6 +35,10 @@ mkdir -p "$OUT"
 exec > >(tee "$OUT/summary.txt") 2>&1  # the whole log comes back as summary.txt
 t0=$(date +%s)
 stamp() { echo "[$(( $(date +%s) - t0 )) s] $*"; }
+if [ "$mode" = wheel ]; then  # needs nothing of device-setup: the wheel carries its libraries
+  OUT="$OUT" bash bench/gpu/wheel.sh .device-deps/wheels
+  exit $?
+fi
 
 source .device-deps/device-setup.sh .device-deps >"$OUT/setup.txt" 2>&1
 cat "$OUT/setup.txt"

@@ -4,7 +4,28 @@ Every message is the library's, word for word: the CLI prints the same text.
 """
 from __future__ import annotations
 
-__all__ = ["Error", "SceneError", "DeviceError", "BuildError", "OutputError", "OutputRefused"]
+import re
+
+__all__ = ["Error", "SceneError", "DeviceError", "BuildError", "OutputError", "OutputRefused", "PlanWarning"]
+
+
+class PlanWarning(UserWarning):
+    """A plan that will run but cost accuracy or time (e.g. a step close to the stability
+    limit), issued through :mod:`warnings` by :func:`arnoldweb.run` (the CLI prints the
+    same text); ``warnings.simplefilter("error", arnoldweb.PlanWarning)`` turns them into errors."""
+
+
+# The library's output messages name the CLI's options; from Python they are run()'s and
+# write()'s arguments.
+_PYTHON_WORDS = ((re.compile(r"--force\b"), "force=True"), (re.compile(r"another --out\b"), "another out="),
+                 (re.compile(r"--out\b"), "out="))
+
+
+def python_words(message: str) -> str:
+    """An output message with the CLI's options named as Python arguments (force=True, out=)."""
+    for pattern, words in _PYTHON_WORDS:
+        message = pattern.sub(words, message)
+    return message
 
 
 class Error(RuntimeError):
@@ -62,7 +83,7 @@ class OutputError(Error, OSError):
     disk full): ``path`` names it."""
 
     def __init__(self, message: str, path: str = ""):
-        Error.__init__(self, message)
+        Error.__init__(self, python_words(message))
         self.path = path
 
     def __str__(self) -> str:

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <nanobind/nanobind.h>
+#include <nanobind/ndarray.h>
 
 #include <exception>
 #include <memory>
@@ -23,6 +24,15 @@ nb::object json_loads(const std::string& text);
 // backend like the CLI does (cli/scene_args.cpp). Releases the GIL.
 arnoldweb::Job plan_scene(const arnoldweb::Scene& scene);
 
+// A fresh numpy array owning `values` (for what the library does not hold
+// contiguously, or what was read from a file).
+template <class T>
+nb::object owned(std::vector<T> values, std::initializer_list<std::size_t> shape) {
+  auto* data = new std::vector<T>(std::move(values));
+  nb::capsule owner(data, [](void* p) noexcept { delete static_cast<std::vector<T>*>(p); });
+  return nb::cast(nb::ndarray<nb::numpy, T>(data->data(), shape, owner));
+}
+
 // A finished (or interrupted) run of a job: what Result objects view.
 struct RunRecord {
   arnoldweb::Job job;
@@ -40,5 +50,6 @@ void bind_result(nb::module_& m);
 void bind_run(nb::module_& m);
 void bind_accuracy(nb::module_& m);
 void bind_sphere(nb::module_& m);
+void bind_saved(nb::module_& m);
 
 }  // namespace awpy

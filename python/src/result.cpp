@@ -38,14 +38,6 @@ nb::object view(nb::handle owner, const std::vector<T>& v, std::initializer_list
   return nb::cast(nb::ndarray<nb::numpy, const T>(v.data(), shape, owner));
 }
 
-// A fresh array (owned by Python), for what the library does not hold contiguously.
-template <class T>
-nb::object owned(std::vector<T> values, std::initializer_list<std::size_t> shape) {
-  auto* data = new std::vector<T>(std::move(values));
-  nb::capsule owner(data, [](void* p) noexcept { delete static_cast<std::vector<T>*>(p); });
-  return nb::cast(nb::ndarray<nb::numpy, T>(data->data(), shape, owner));
-}
-
 nb::dict counts(const RunRecord& r, std::size_t k) {
   const Result& x = part(r, k);
   nb::dict d;

@@ -29,6 +29,13 @@ class PythonHook final : public arnoldweb::Progress, public arnoldweb::JobObserv
   void report(std::uint64_t done, std::uint64_t total, double seconds, bool check_signals) {
     nb::gil_scoped_acquire locked;
     if (stop_.load()) return;  // already stopping: the first exception is the one raised
+    // finish() after an update() that already said done == total: the callback
+    // hears of the end of a part once
+    const bool repeat = !check_signals && reported_ && done == last_done_ && total == last_total_;
+    reported_ = true;
+    last_done_ = done;
+    last_total_ = total;
+    if (repeat) return;
     try {
       if (!callback_.is_none()) callback_(done, total, seconds);
       if (check_signals && PyErr_CheckSignals() != 0) throw nb::python_error();
@@ -39,15 +46,31 @@ class PythonHook final : public arnoldweb::Progress, public arnoldweb::JobObserv
   }
 
   nb::object callback_;
+  bool reported_ = false;
+  std::uint64_t last_done_ = 0, last_total_ = 0;
   std::atomic<bool> stop_{false};
   nb::object exception_ = nb::none();
 };
+
+// The plans' warnings (a step that will cost accuracy, ...) through Python's
+// warnings, as arnoldweb.PlanWarning, before anything is computed: a filter
+// that turns them into errors stops the run here.
+void warn_plans(const arnoldweb::Job& job) {
+  nb::object warn = nb::module_::import_("warnings").attr("warn");
+  nb::object category = nb::module_::import_("arnoldweb._errors").attr("PlanWarning");
+  for (std::size_t k = 0; k < job.parts.size(); ++k)
+    for (const std::string& w : job.parts[k].plan.warnings) {
+      const std::string text = k == 0 ? w : "panel " + job.parts[k].name + ": " + w;
+      warn(nb::str(text.data(), text.size()), category, 2);  // stacklevel 2: the caller of arnoldweb.run
+    }
+}
 
 std::shared_ptr<RunRecord> run_scene(const arnoldweb::Scene& scene, nb::object progress, bool write, bool force) {
   auto record = std::make_shared<RunRecord>();
   record->stop_exception = nb::none();
   record->job = plan_scene(scene);
   const arnoldweb::Job& job = record->job;
+  warn_plans(job);
   arnoldweb::OutputOptions output;
   PythonHook hook(std::move(progress));
   {

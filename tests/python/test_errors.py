@@ -45,7 +45,7 @@ def test_bad_set_leaves_scene_as_it_was(small_scene):
     with pytest.raises(aw.SceneError) as e:
         small_scene.set("ensemble.trajectories", -5)
     assert e.value.key == "ensemble.trajectories"
-    assert "--set ensemble.trajectories=-5" in str(e.value)
+    assert "Scene.set('ensemble.trajectories', -5)" in str(e.value)
     assert small_scene["ensemble.trajectories"] == 3000
     assert small_scene.overrides == []
 

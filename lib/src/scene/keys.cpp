@@ -63,6 +63,10 @@ bool is_power_of_two(std::int64_t v) { return v > 0 && (v & (v - 1)) == 0; }
 // ------------------------------------------------------------- literals
 std::string boolean(bool b) { return b ? "true" : "false"; }
 std::string pair(const std::array<double, 2>& v) { return "[" + toml_double(v[0]) + ", " + toml_double(v[1]) + "]"; }
+// a pair of whole numbers (held as doubles), written as TOML integers: [64, 64]
+std::string integer_pair(const std::array<double, 2>& v) {
+  return "[" + std::to_string(static_cast<long long>(v[0])) + ", " + std::to_string(static_cast<long long>(v[1])) + "]";
+}
 std::string list(const std::vector<double>& v) {
   std::string s = "[";
   for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + toml_double(v[i]);
@@ -81,6 +85,9 @@ Literal bool_of(bool Scene::*f) {
 }
 Literal pair_of(std::array<double, 2> Scene::*f) {
   return [f](const Scene& s) { return pair(s.*f); };
+}
+Literal integer_pair_of(std::array<double, 2> Scene::*f) {
+  return [f](const Scene& s) { return integer_pair(s.*f); };
 }
 Literal text_of(std::string Scene::*f) {
   return [f](const Scene& s) { return toml_string(s.*f); };
@@ -544,8 +551,8 @@ void indicator_keys(Rows& add) {
       "fixed = p, position = [x, y, z] }",
       [](const Scene& s) {
         return "{ kind = " + toml_string(s.grid_kind) + ", nside = " + std::to_string(s.grid_nside) +
-               ", resolution = " + pair(s.grid_resolution) + ", range1 = " + pair(s.grid_range1) +
-               ", range2 = " + pair(s.grid_range2) + ", axes = " + pair(s.grid_axes) +
+               ", resolution = " + integer_pair(s.grid_resolution) + ", range1 = " + pair(s.grid_range1) +
+               ", range2 = " + pair(s.grid_range2) + ", axes = " + integer_pair(s.grid_axes) +
                ", fixed = " + toml_double(s.grid_fixed) + ", position = " + list(s.grid_position) + " }";
       },
       table_only(),
@@ -566,7 +573,7 @@ void indicator_keys(Rows& add) {
       integer_into(&Scene::grid_nside, [](std::int64_t v) { return v <= 1024 && is_power_of_two(v); }),
       "HEALPix resolution of a \"healpix\" grid: 12 nside^2 initial conditions.");
   add("ensemble.grid.resolution", "array of 2 integers", "1 to 65536 each", "an array [n1, n2] of integers from 1 to 65536",
-      pair_of(&Scene::grid_resolution),
+      integer_pair_of(&Scene::grid_resolution),
       pair_into(&Scene::grid_resolution, [whole](double a, double b) { return whole(a) && whole(b); }),
       "Points along the two gridded coordinates of a \"lonlat\" or \"plane\" grid (n1 x n2 initial conditions).");
   add("ensemble.grid.range1", "array of 2 floats", "[from, to], from < to", "an array [from, to] with from < to",
@@ -576,7 +583,7 @@ void indicator_keys(Rows& add) {
       pair_of(&Scene::grid_range2), pair_into(&Scene::grid_range2, [](double a, double b) { return a < b; }),
       "Range of the second gridded momentum of a \"plane\" grid.");
   add("ensemble.grid.axes", "array of 2 integers", "two different of 0, 1, 2", "an array [i, j] of two different integers 0, 1 or 2",
-      pair_of(&Scene::grid_axes), pair_into(&Scene::grid_axes, [](double a, double b) {
+      integer_pair_of(&Scene::grid_axes), pair_into(&Scene::grid_axes, [](double a, double b) {
         auto axis = [](double v) { return v == 0 || v == 1 || v == 2; };
         return axis(a) && axis(b) && a != b;
       }),

@@ -11,6 +11,7 @@
 #include "aw_params.h"
 #include "backends/backends.hpp"
 #include "backends/compute_device.hpp"
+#include "backends/cpu/cpu_isa.hpp"
 #include "backends/cpu/cpu_kernel.hpp"
 
 namespace arnoldweb::detail {
@@ -70,11 +71,13 @@ class CpuDevice final : public ComputeDevice {
                         "the cpu backend runs the built-in models only (its kernels are compiled ahead of "
                         "time); run model.kind = \"expression\" on an OpenCL device such as PoCL "
                         "(--device opencl:0; `arnoldweb devices` lists them) or on cuda:N");
-    kernel_ = cpu_kernel(k.model, fl, native);
+    const CpuIsa& isa = cpu_isa_selected();  // the best compiled set this CPU runs, or ARNOLDWEB_CPU_ISA
+    kernel_ = cpu_kernel_for(k.model, fl, native, isa);
     if (!kernel_)
       throw DeviceError(info_.id, "", 0, "this build has no cpu kernel for model " + std::to_string(k.model));
     config_ = k;
-    variant_ = std::string("cpu_") + (fl ? "float" : "double") + "_" + (native ? "native" : "portable");
+    variant_ = std::string("cpu_") + (fl ? "float" : "double") + "_" + (native ? "native" : "portable") + " (" +
+               isa.name + ", " + std::to_string(fl ? isa.lanes_float : isa.lanes_double) + " lanes)";
   }
   std::string kernel_description() const override { return variant_; }
 
