@@ -22,6 +22,8 @@
 # chooses, each timed on the whole 1e8 (issue 16 target 5, issue 18; docs/accuracy.md).
 # float: build the program, then bench/gpu/float_map.sh on the first CUDA device: Figure 3 in double
 # and in float, timed, and the maps compared by the chi-square test (issue 16 target 6).
+# fgl: build the program, then bench/gpu/fgl_rate.sh on the first CUDA device: the fgl rates that
+# size issue 26's frequency map and D(eps) scan (docs/frequencies.md).
 # Needs .device-deps/ (see docs/gpu.md): Debian packages the image lacks and
 # ../shared/gpu/device-setup.sh. Results go to $OUT (default ./gpu-out).
 set -uo pipefail
@@ -45,7 +47,7 @@ fi
 stamp "build"
 targets=""
 [ "$mode" = bench ] && targets="--target arnoldweb-cli arnoldweb_bench"
-[ "$mode" = accuracy ] || [ "$mode" = float ] && targets="--target arnoldweb-cli"
+[ "$mode" = accuracy ] || [ "$mode" = float ] || [ "$mode" = fgl ] && targets="--target arnoldweb-cli"
 if ! cmake --build build-gpu -j"$(nproc)" $targets >>"$OUT/build.txt" 2>&1; then
   grep -E "error|Error" -A4 "$OUT/build.txt" | head -60; exit 1
 fi
@@ -68,6 +70,13 @@ if [ "$mode" = float ]; then
   stamp "float where it is enough: Figure 3 in double and float, maps compared"
   CUDA0=$(first_cuda)
   timeout 500 bash bench/gpu/float_map.sh build-gpu/arnoldweb "$CUDA0" /tmp/aw-float "${AW_FLOAT_N:-100000000}"
+  stamp "done"
+  exit 0
+fi
+if [ "$mode" = fgl ]; then
+  stamp "fgl rates (issue 26 sizing)"
+  CUDA0=$(first_cuda)
+  timeout 560 bash bench/gpu/fgl_rate.sh build-gpu/arnoldweb "$CUDA0" | tee "$OUT/fgl_rate.txt"
   stamp "done"
   exit 0
 fi
