@@ -123,7 +123,7 @@ AW_FN void aw_naff_sums_at(AW_GLOBAL const real* re, AW_GLOBAL const real* im, a
     s0i = s0i + ai;
     s1r = AW_FMA(m, ar, s1r);
     s1i = AW_FMA(m, ai, s1i);
-    const real mm = m * m; /* exact for n < 2^26 (double), 2^12 (float: then rounded once) */
+    const real mm = m * m; /* exact while |m| < 2^26 (double), 2^12 (float: n < 8192) */
     s2r = AW_FMA(mm, ar, s2r);
     s2i = AW_FMA(mm, ai, s2i);
     wsum = wsum + w;
