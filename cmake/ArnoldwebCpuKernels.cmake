@@ -2,7 +2,7 @@
 # one translation unit per (model, precision, math, instruction set), generated
 # here from lib/src/backends/cpu/cpu_kernel_variant.cpp.in, plus the tables
 # that find them (cpu_kernel_table.cpp, read by backends/cpu/cpu_isa.cpp). The
-# models are read from lib/device/models/aw_models.h (its
+# models are read from the generated models/aw_models.h (its
 # "#define AW_MODEL_<NAME> <id>" lines), so a new model needs no change here.
 #
 #   arnoldweb_cpu_kernels(<out-var> <models-header> <output-dir>)

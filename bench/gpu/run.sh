@@ -26,6 +26,8 @@
 # (bench/gpu/prepare-wheel.sh) installed into a fresh venv, timed, and a scene
 # from Python on CUDA, NVIDIA OpenCL and cpu next to the wheel's CLI
 # (bench/gpu/wheel.sh; issue 28).
+# fgl: build the program, then bench/gpu/fgl_rate.sh on the first CUDA device: the fgl rates that
+# size issue 26's frequency map and D(eps) scan (docs/frequencies.md).
 # Needs .device-deps/ (see docs/gpu.md): Debian packages the image lacks and
 # ../shared/gpu/device-setup.sh. Results go to $OUT (default ./gpu-out).
 set -uo pipefail
@@ -53,7 +55,7 @@ fi
 stamp "build"
 targets=""
 [ "$mode" = bench ] && targets="--target arnoldweb-cli arnoldweb_bench"
-[ "$mode" = accuracy ] || [ "$mode" = float ] && targets="--target arnoldweb-cli"
+[ "$mode" = accuracy ] || [ "$mode" = float ] || [ "$mode" = fgl ] && targets="--target arnoldweb-cli"
 if ! cmake --build build-gpu -j"$(nproc)" $targets >>"$OUT/build.txt" 2>&1; then
   grep -E "error|Error" -A4 "$OUT/build.txt" | head -60; exit 1
 fi
@@ -76,6 +78,13 @@ if [ "$mode" = float ]; then
   stamp "float where it is enough: Figure 3 in double and float, maps compared"
   CUDA0=$(first_cuda)
   timeout 500 bash bench/gpu/float_map.sh build-gpu/arnoldweb "$CUDA0" /tmp/aw-float "${AW_FLOAT_N:-100000000}"
+  stamp "done"
+  exit 0
+fi
+if [ "$mode" = fgl ]; then
+  stamp "fgl rates (issue 26 sizing)"
+  CUDA0=$(first_cuda)
+  timeout 560 bash bench/gpu/fgl_rate.sh build-gpu/arnoldweb "$CUDA0" | tee "$OUT/fgl_rate.txt"
   stamp "done"
   exit 0
 fi

@@ -101,9 +101,9 @@
  * written where it does not finish it.
  *   reals: u_x u_y u_z (turns) p_x p_y p_z | E(0) max|dE| over-limit inside
  *          | the window's start u_x u_y u_z | the tangent vector
- *          q_x q_y q_z p_x p_y p_z and its observers log2w max_n2 s1 ysum mean_y cov
+ *          q_x q_y q_z p_x p_y p_z and its observers log2w max_n2 s1 ysum mean_y cov prev_n2
  *   ints:  winding x y z, status | the window's start windings x y z | tangent steps */
-#define AW_CARRY_REALS 25
+#define AW_CARRY_REALS 26
 #define AW_CARRY_INTS 8
 #define AW_CARRY_ENERGY 6
 #define AW_CARRY_WINDOW 10

@@ -85,8 +85,8 @@ TEST_SUITE("cpu-isa") {
               ref = r;
               continue;
             }
-            CHECK(awtest::first_difference(r.final_r, ref.final_r) == -1);
-            CHECK(awtest::first_difference(r.final_i, ref.final_i) == -1);
+            CHECK(awtest::first_difference(r.reals("final_states"), ref.reals("final_states")) == -1);
+            CHECK(awtest::first_difference(r.ints("final_states"), ref.ints("final_states")) == -1);
             CHECK(digest_map(r) == digest_map(ref));
             CHECK(r.energy.max == ref.energy.max);
             CHECK(r.binned == ref.binned);

@@ -73,7 +73,7 @@ AW_FN void aw_carry_save(const aw_lstate* s, const aw_fx* fx, const aw_window_st
                                    fx->tangent.qx, fx->tangent.qy, fx->tangent.qz,
                                    fx->tangent.px, fx->tangent.py, fx->tangent.pz,
                                    fx->tangent.log2w, fx->tangent.max_n2, fx->tangent.s1,
-                                   fx->tangent.ysum, fx->tangent.mean_y, fx->tangent.cov};
+                                   fx->tangent.ysum, fx->tangent.mean_y, fx->tangent.cov, fx->tangent.prev_n2};
   for (int c = 0; c < AW_CARRY_REALS; ++c) aw_carry_put(out, ip, l, c, r[c]);
   const lint w[6] = {s->wx, s->wy, s->wz, ws->wx, ws->wy, ws->wz};
   for (int c = 0; c < 3; ++c) aw_carry_puti(out, ip, l, c, w[c]);
@@ -112,6 +112,7 @@ AW_FN void aw_carry_load(aw_lstate* s, aw_fx* fx, aw_window_start* ws, aw_output
   t->ysum = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 9);
   t->mean_y = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 10);
   t->cov = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 11);
+  t->prev_n2 = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 12);
   t->steps = 0;
   for (int j = 0; j < AW_LANES; ++j)
     if (AW_LANE_ACTIVE(l, j)) t->steps = aw_record_i(out, ip, AW_OUT_CARRY, AW_LANE_RECORD(l, j))[AW_CARRY_INTS - 1];

@@ -5,6 +5,7 @@
 #include "arnoldweb/analysis.hpp"
 #include "arnoldweb/checkpoint.hpp"
 #include "arnoldweb/device.hpp"
+#include "arnoldweb/diffusion.hpp"
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/job.hpp"
 #include "arnoldweb/methods.hpp"
