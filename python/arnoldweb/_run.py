@@ -27,7 +27,9 @@ def run(scene: SceneLike, device: Optional[str] = None,
         out: "str | os.PathLike[str] | None" = None, force: bool = False) -> Result:
     """Runs a scene (and its [[panel]] runs) and returns the main run's :class:`Result`.
 
-    - ``device``: "cpu", "opencl:N", "cuda:N" or "auto" (as ``--device``); None: run.device.
+    - ``device``: "cpu", "opencl:N", "cuda:N", "auto", "all" (every GPU) or a list such as
+      "cuda:0,cuda:1" (one thread per device, the same bits as one device), as ``--device``;
+      None: run.device.
     - ``progress``: True for a bar (tqdm when installed, else lines on stderr), or a
       callable ``progress(done, total, seconds)`` called after every chunk; None: quiet.
     - ``out``: an output directory to write as ``arnoldweb run --out`` does (checked before

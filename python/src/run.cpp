@@ -11,6 +11,8 @@
 #include <nanobind/stl/shared_ptr.h>
 #include <nanobind/stl/string.h>
 
+#include "arnoldweb/cluster.hpp"
+
 namespace awpy {
 namespace {
 
@@ -53,19 +55,24 @@ std::shared_ptr<RunRecord> run_scene(const arnoldweb::Scene& scene, nb::object p
   {
     nb::gil_scoped_release unlocked;
     // everything is checked before any work: memory, then the output place
-    const arnoldweb::DeviceInfo device = arnoldweb::find_device(job.main().scene.device);
     const std::uint64_t host = arnoldweb::available_memory();
-    for (const arnoldweb::JobPart& part : job.parts) arnoldweb::check_memory(part.plan, device, host);
+    for (const std::string& id : arnoldweb::device_ids(job.main().scene.device)) {
+      const arnoldweb::DeviceInfo device = arnoldweb::find_device(id);
+      for (const arnoldweb::JobPart& part : job.parts) arnoldweb::check_memory(part.plan, device, host);
+    }
     if (write) {
       output.force = force;
       output.scene_file = scene.file;
       output.expected_bytes = arnoldweb::estimate_output_bytes(job);
       record->written_dir = arnoldweb::check_output_dir(job.main().scene.output_dir, output);
     }
-    auto backend = arnoldweb::open_backend(job.main().scene.device);
+    // every device run.device names (a list, "all"): one thread each
+    const auto backends = arnoldweb::open_backends(job.main().scene.device);
+    std::vector<arnoldweb::Backend*> devices;
+    for (const auto& b : backends) devices.push_back(b.get());
     arnoldweb::RunOptions options;
     options.stop = &hook.stop();
-    record->result = arnoldweb::run_job(job, *backend, options, &hook);
+    record->result = arnoldweb::run_job_on(job, devices, options, &hook);
     if (write) {
       // a failed write must not lose what was computed: the error is raised
       // by the package with the result attached

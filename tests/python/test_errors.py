@@ -64,6 +64,15 @@ def test_unknown_device(small_scene):
     assert "devices present" in str(e.value)
 
 
+def test_device_lists_refused_before_any_work(small_scene):
+    with pytest.raises(aw.SceneError) as e:
+        aw.run(small_scene, device="cpu,cpu")
+    assert "cpu is listed twice" in str(e.value)
+    with pytest.raises(aw.DeviceError) as e:
+        aw.run(small_scene, device="cpu,opencl:99")
+    assert e.value.device == "opencl:99"
+
+
 def test_output_rules(small_scene, tmp_path):
     out = tmp_path / "res"
     r = aw.run(small_scene, out=out)

@@ -406,7 +406,7 @@ TEST_SUITE("scene") {
         {"[run]\nduration = -50\n", "run.duration", 2, 12, {"got -50"}},
         {"[run]\nduration = inf\n", "run.duration", 2, 12, {"got inf"}},
         {"[run]\ndevice = \"gpu\"\n", "run.device", 2, 10,
-         {"\"auto\", \"cpu\", \"opencl:N\" or \"cuda:N\"", "got \"gpu\""}},
+         {"\"auto\", \"all\", \"cpu\", \"opencl:N\", \"cuda:N\" or a list", "got \"gpu\""}},
         {"[run]\ndevice = \"opencl:\"\n", "run.device", 2, 10, {"got \"opencl:\""}},
         {"[run]\ndevice = \"cuda:-1\"\n", "run.device", 2, 10, {"got \"cuda:-1\""}},
         {"[run]\ndevice = 0\n", "run.device", 2, 10, {"got integer 0"}},

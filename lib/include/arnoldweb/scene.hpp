@@ -177,6 +177,15 @@ Scene parse_scene(const std::string& text, const std::string& file,
                   const std::vector<std::string>& overrides = {},
                   const std::vector<std::string>& labels = {});
 
+// run.device (docs/cluster.md): "auto", "all", one device id or a list of ids
+// separated by commas ("cuda:0,cuda:1"). The entries of a value as written: a
+// list's ids in order, any other value on its own.
+std::vector<std::string> device_entries(const std::string& device);
+// Whether `id` is one device id: "cpu", "opencl:N" or "cuda:N".
+bool is_device_id(const std::string& id);
+// The first id that a list names twice, or "".
+std::string repeated_device(const std::string& device);
+
 // All keys a scene may contain, with their type and allowed values, for docs
 // and `arnoldweb check`.
 struct SceneKey {

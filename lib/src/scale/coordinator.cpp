@@ -127,13 +127,12 @@ class PartCoordinator {
 }  // namespace
 
 JobResult coordinate_job(const Job& job, Transport& transport, const RunOptions& options, JobObserver* observer,
-                         const DeviceInfo& device, const std::string& kernel) {
+                         const DeviceInfo& device, const std::function<std::string()>& kernel) {
   JobResult jr;
   std::unique_ptr<JobCheckpoints> cp;
   if (options.checkpoint && options.checkpoint->sink) cp = std::make_unique<JobCheckpoints>(job, *options.checkpoint);
   PartReductions parts;
   if (cp) parts = cp->resume();
-  const std::string ranks = "; " + std::to_string(transport.workers()) + " devices (MPI ranks)";
   for (std::size_t k = 0; k < job.parts.size(); ++k) {
     const Plan& plan = job.parts[k].plan;
     Result r;
@@ -152,7 +151,7 @@ JobResult coordinate_job(const Job& job, Transport& transport, const RunOptions&
       double seconds = 0;
       const bool stopped = part.run(seconds);
       r = parts[k]->result();
-      r.kernel = kernel + ranks;
+      r.kernel = kernel();
       r.interrupted = stopped;
       if (o.progress) o.progress->finish(r.completed, plan.scene.trajectories, r.wall_seconds);
     }

@@ -386,12 +386,23 @@ void run_keys(Rows& add) {
       real_into(&Scene::average, positive), "Averaging window dt of the velocity, in T; a multiple of integrator.step.");
   add("run.duration", "float", "> 0", "a finite float greater than 0 (in units of T)", real_of(&Scene::duration),
       real_into(&Scene::duration, positive), "Propagation time t_p, in T; a multiple of run.average.");
-  const std::string forms = "\"auto\", \"cpu\", \"opencl:N\" or \"cuda:N\"";
-  add("run.device", "string", forms, forms + " (N = 0, 1, ...: the index in `arnoldweb devices`)",
+  const std::string forms = "\"auto\", \"all\", \"cpu\", \"opencl:N\", \"cuda:N\" or a list \"cuda:0,cuda:1\"";
+  add("run.device", "string", forms,
+      forms + " (N = 0, 1, ...: the index in `arnoldweb devices`; a list names each device once)",
       text_of(&Scene::device),
-      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) { r.text(key, n, s.device, valid_device); },
-      "Where to run. \"auto\" picks the default device; whether the device exists is checked "
-      "when the run starts.");
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        std::string device;
+        if (!r.text(key, n, device, valid_device)) return;
+        if (const std::string twice = repeated_device(device); !twice.empty()) {
+          r.bad(key, n, true, " (" + twice + " is listed twice)");
+          return;
+        }
+        s.device = device;
+      },
+      "Where to run. \"auto\" picks the default device; a list of ids (\"cuda:0,cuda:1\") runs on "
+      "every device listed, from one process (under mpirun, each rank drives its entry); \"all\" "
+      "is every GPU of the machine (the CUDA devices, else the OpenCL GPUs; without a GPU, the "
+      "default device). Whether the devices exist is checked when the run starts (docs/cluster.md).");
   // run.checkpoint_every (checkpoints, issue 15): "auto", "off", seconds or "<number> <unit>"
   add("run.checkpoint_every", "float or string", "\"auto\", \"off\", seconds > 0, or \"N s\", \"N min\", \"N h\"",
       "\"auto\", \"off\", a number of seconds greater than 0, or a string such as \"10 min\" "

@@ -163,18 +163,6 @@ const std::vector<MathName>& math_names() {
   return n;
 }
 
-bool valid_device(const std::string& id) {
-  if (id == "auto" || id == "cpu") return true;
-  for (const char* prefix : {"opencl:", "cuda:"}) {
-    const std::string p = prefix;
-    if (id.compare(0, p.size(), p) != 0) continue;
-    const std::string n = id.substr(p.size());
-    return !n.empty() && n.size() <= 9 &&
-           std::all_of(n.begin(), n.end(), [](char c) { return c >= '0' && c <= '9'; });
-  }
-  return false;
-}
-
 void check_structure(const toml::table& root, Problems& problems) { check_table(root, "", problems); }
 
 }  // namespace arnoldweb::scene_detail
