@@ -1,7 +1,7 @@
 // Expression models on OpenCL (PoCL here): the paper's potential written as
 // an expression, its emitted header compiled in place of the built-in's,
-// agrees with the built-in seibert2011 to round-off; the cpu backend refuses
-// an expression model, naming PoCL. Most cases build the plan's kernel
+// agrees with the built-in seibert2011 to round-off (the cpu backend's run-time
+// kernel: test_expression_cpu.cpp). Most cases build the plan's kernel
 // configuration directly from a built-in scene; one checks that the scene's
 // route (model.kind = "expression") gives the same bits.
 #include <doctest/doctest.h>
@@ -115,17 +115,5 @@ TEST_SUITE("expression-opencl") {
     CHECK(r.flagged_nonfinite == 0);
     CHECK(r.energy.max < 1e-3);
     CHECK(r.energy.max > 0);
-  }
-}
-
-TEST_SUITE("expression") {
-  TEST_CASE("the cpu backend refuses an expression model and names PoCL") {
-    try {
-      awtest::run_on("cpu", as_expression(small_scene(), awtest::paper_potential()));
-      FAIL("the cpu backend ran an expression model");
-    } catch (const DeviceError& e) {
-      CHECK(std::string(e.what()).find("PoCL") != std::string::npos);
-      CHECK(std::string(e.what()).find("opencl:0") != std::string::npos);
-    }
   }
 }

@@ -38,8 +38,9 @@
 #elif AW_MODEL == 1000
 /* an expression model (model.kind = "expression"): the header emitted from the
  * scene's potential (lib/src/physics/expression/), given to the OpenCL and
- * CUDA compilers at run time under this name. Not an AW_MODEL_ line: the cpu
- * backend's kernels are compiled ahead of time and have no such variant. */
+ * CUDA compilers and to the host C++ compiler (the cpu backend's run-time
+ * variant, cpu_runtime_kernel.cpp) under this name. Not an AW_MODEL_ line: the
+ * cpu backend's ahead-of-time variants are generated from those lines only. */
 #include "models/aw_expression.h"
 #else
 #error "unknown AW_MODEL"

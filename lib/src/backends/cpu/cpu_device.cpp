@@ -12,6 +12,7 @@
 #include "backends/backends.hpp"
 #include "backends/compute_device.hpp"
 #include "backends/cpu/cpu_kernel.hpp"
+#include "backends/cpu/cpu_runtime_kernel.hpp"
 
 namespace arnoldweb::detail {
 namespace {
@@ -69,16 +70,17 @@ class CpuDevice final : public ComputeDevice {
   void compile(const KernelConfig& k) override {
     const bool fl = k.precision == Precision::Float;
     const bool native = k.math == MathMode::Native;
-    if (!k.model_source.empty())  // docs/models.md, "Expression models": why the cpu backend does not
-      throw DeviceError(info_.id, "", 0,
-                        "the cpu backend runs the built-in models only (its kernels are compiled ahead of "
-                        "time); run model.kind = \"expression\" on an OpenCL device such as PoCL "
-                        "(--device opencl:0; `arnoldweb devices` lists them) or on cuda:N");
-    kernel_ = cpu_kernel(k.model, fl, native);
-    if (!kernel_)
-      throw DeviceError(info_.id, "", 0, "this build has no cpu kernel for model " + std::to_string(k.model));
+    if (!k.model_source.empty()) {  // an expression model: compiled now (docs/models.md)
+      const CpuRuntimeKernel rk = cpu_expression_kernel(k.model_source, fl, native);
+      kernel_ = rk.kernel;
+      variant_ = rk.variant + " (compiled at run time by " + rk.compiler + "; " + rk.origin + ")";
+    } else {
+      kernel_ = cpu_kernel(k.model, fl, native);
+      if (!kernel_)
+        throw DeviceError(info_.id, "", 0, "this build has no cpu kernel for model " + std::to_string(k.model));
+      variant_ = std::string("cpu_") + (fl ? "float" : "double") + "_" + (native ? "native" : "portable");
+    }
     config_ = k;
-    variant_ = std::string("cpu_") + (fl ? "float" : "double") + "_" + (native ? "native" : "portable");
   }
   std::string kernel_description() const override { return variant_; }
 
