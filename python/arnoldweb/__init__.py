@@ -15,16 +15,16 @@ See docs/python.md.
 from __future__ import annotations
 
 from . import _arnoldweb as _core
-from ._errors import BuildError, DeviceError, Error, OutputError, OutputRefused, SceneError
+from ._errors import BuildError, DeviceError, Error, OutputError, OutputRefused, SceneError, StateError
 from ._result import COUNTER_NAMES, INDICATOR_NAMES, Result
-from ._run import accuracy, run
+from ._run import accuracy, check_states, run
 from ._scene import Scene
 
 __version__: str = _core.__version__
 
-__all__ = ["Scene", "Result", "run", "accuracy", "devices", "methods", "scene_keys", "backend_problems",
+__all__ = ["Scene", "Result", "run", "accuracy", "check_states", "devices", "methods", "scene_keys", "backend_problems",
            "default_device", "pixel_directions", "resonances", "compare_maps", "Error", "SceneError", "DeviceError", "BuildError", "OutputError",
-           "OutputRefused", "COUNTER_NAMES", "INDICATOR_NAMES", "__version__"]
+           "OutputRefused", "StateError", "COUNTER_NAMES", "INDICATOR_NAMES", "__version__"]
 
 
 def devices() -> list:

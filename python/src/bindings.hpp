@@ -40,5 +40,6 @@ void bind_result(nb::module_& m);
 void bind_run(nb::module_& m);
 void bind_accuracy(nb::module_& m);
 void bind_sphere(nb::module_& m);
+void bind_states(nb::module_& m);
 
 }  // namespace awpy

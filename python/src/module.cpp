@@ -23,4 +23,5 @@ NB_MODULE(_arnoldweb, m) {
   awpy::bind_run(m);
   awpy::bind_accuracy(m);
   awpy::bind_sphere(m);
+  awpy::bind_states(m);
 }

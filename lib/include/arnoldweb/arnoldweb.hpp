@@ -14,4 +14,5 @@
 #include "arnoldweb/run.hpp"
 #include "arnoldweb/scene.hpp"
 #include "arnoldweb/sphere.hpp"
+#include "arnoldweb/states.hpp"
 #include "arnoldweb/version.hpp"

@@ -77,6 +77,9 @@ struct Scene {
   std::array<double, 2> box_lat = {-5.0, 5.0};     // ensemble.box.lat, degrees
   std::array<double, 2> gaussian_mean = {0.0, 0.0};     // ensemble.gaussian.mean (p_x, p_y)
   std::array<double, 2> gaussian_sigma = {0.01, 0.01};  // ensemble.gaussian.sigma
+  // ensemble.file: the HDF5 file of the states for ensemble.initial = "file"
+  // (states.hpp; relative to the current directory); "" when none
+  std::string initial_file;
 
   // [integrator]
   std::string method = "yoshida6a";

@@ -13,6 +13,7 @@
 #include "aw_params.h"
 #include "physics/models.hpp"
 #include "plan/checks.hpp"
+#include "states/state_plan.hpp"
 #include "plan/effects.hpp"
 #include "plan/indicators.hpp"
 #include "plan/kernel_params.hpp"
@@ -324,6 +325,7 @@ Plan make_plan(const Scene& scene_as_written) {
   auto params = std::make_shared<detail::KernelParams>();
   const detail::ModelRow& model = detail::model_of(scene);
   model.fill(scene, params->reals);
+  detail::plan_initial_states(scene);  // ensemble.initial = "file" (issue 25): the file read and checked
   plan_method(scene, p);
   plan_model(scene, model, params->reals);
   if (scene.initial == "grid")

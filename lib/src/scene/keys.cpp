@@ -7,6 +7,7 @@
 // Adding a key: a field in Scene (scene.hpp) and a row here.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "arnoldweb/methods.hpp"
 #include "physics/models.hpp"
@@ -304,7 +305,25 @@ void ensemble_keys(Rows& add) {
       "How initial states are drawn; X is uniform on the accessible part of the torus. "
       "\"shell\": direction of P uniform on the sphere, speed sqrt(2 (E - V(X))). \"cap\", "
       "\"box\": direction uniform in ensemble.cap or ensemble.box. \"gaussian\": see "
-      "ensemble.gaussian. \"grid\": the points of ensemble.grid, in order.");
+      "ensemble.gaussian. \"grid\": the points of ensemble.grid, in order. \"file\": the states of "
+      "ensemble.file (docs/outputs.md, \"State files\"; not yet run).");
+  add("ensemble.file", "string", "an existing file", "a string naming an existing file (HDF5, docs/outputs.md)",
+      [](const Scene& s) { return s.initial_file.empty() ? std::string() : toml_string(s.initial_file); },
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        std::string path;
+        if (!r.text(key, n, path, [](const std::string& p) { return !p.empty(); })) return;
+        std::error_code ec;
+        const auto status = std::filesystem::status(path, ec);
+        if (!std::filesystem::exists(status))
+          r.bad(key, n, true, " (no such file)");
+        else if (!std::filesystem::is_regular_file(status))
+          r.bad(key, n, true, std::filesystem::is_directory(status) ? " (it is a directory)" : " (not a regular file)");
+        else
+          s.initial_file = path;
+      },
+      "For ensemble.initial = \"file\": the HDF5 file of the initial states (positions, momenta, "
+      "optional winding counts and time; or the /final group of a states.h5), relative to the current "
+      "directory. Read and checked when the scene is planned (docs/outputs.md, \"State files\").");
   add("ensemble.chunk", "integer", ">= 0 (0 = automatic)", "an integer >= 0 (0 = automatic)",
       integer_of(&Scene::chunk), integer_into(&Scene::chunk, at_least_0),
       "Trajectories per kernel launch; 0 lets the runner choose. Does not change the results.");

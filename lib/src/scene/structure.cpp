@@ -147,7 +147,7 @@ std::string keys_of(const std::string& parent) {
 }
 
 const std::vector<std::string>& initial_kinds() {
-  static const std::vector<std::string> k = {"shell", "cap", "box", "gaussian", "grid"};
+  static const std::vector<std::string> k = {"shell", "cap", "box", "gaussian", "grid", "file"};
   return k;
 }
 
