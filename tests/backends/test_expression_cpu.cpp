@@ -18,6 +18,7 @@
 #include "../physics/expression_cases.hpp"
 #include "backends/cpu/cpu_runtime_kernel.hpp"
 #include "backends/kernel_sources.hpp"
+#include "run_outputs.hpp"
 #include "support.hpp"
 
 using namespace arnoldweb;
@@ -50,12 +51,6 @@ Scene expression_scene(const std::string& potential, const std::vector<std::stri
   std::vector<std::string> all = {awtest::set("model.potential", potential)};
   all.insert(all.end(), sets.begin(), sets.end());
   return awtest::scene_from(kScene, all, "<expression-cpu>");
-}
-
-std::string first_opencl() {
-  for (const auto& d : list_devices())
-    if (d.backend == "opencl") return d.id;
-  return "";
 }
 
 // ARNOLDWEB_CACHE_DIR set for the life of the object (a test's own cache), then restored.
@@ -92,7 +87,7 @@ void check_same_bits(const Result& a, const Result& b) {
 
 bool ready() {
   return awtest::require(!detail::runtime_cxx().empty(), "expression-cpu", "no C++ compiler on PATH") &&
-         awtest::require(!first_opencl().empty(), "expression-cpu", "no OpenCL device here (install pocl-opencl-icd)");
+         awtest::require(!awtest::first_opencl().empty(), "expression-cpu", "no OpenCL device here (install pocl-opencl-icd)");
 }
 
 }  // namespace
@@ -110,7 +105,7 @@ TEST_SUITE("expression-cpu") {
       CAPTURE(sets.size());
       const Plan plan = make_plan(expression_scene(potential, sets));
       const Result cpu = awtest::run_on("cpu", plan);
-      const Result pocl = awtest::run_on(first_opencl(), plan);
+      const Result pocl = awtest::run_on(awtest::first_opencl(), plan);
       CHECK(cpu.kernel.find("compiled at run time") != std::string::npos);
       CHECK(cpu.flagged_nonfinite == 0);
       CHECK(cpu.energy.max > 0);

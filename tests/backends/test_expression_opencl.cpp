@@ -13,6 +13,7 @@
 #include "../physics/expression_cases.hpp"
 #include "physics/expression/expression_model.hpp"
 #include "plan/kernel_params.hpp"
+#include "run_outputs.hpp"
 #include "support.hpp"
 
 using namespace arnoldweb;
@@ -51,17 +52,11 @@ Plan as_expression(const Scene& scene, const std::string& text) {
   return p;
 }
 
-std::string first_opencl() {
-  for (const auto& d : list_devices())
-    if (d.backend == "opencl") return d.id;
-  return "";
-}
-
 }  // namespace
 
 TEST_SUITE("expression-opencl") {
   TEST_CASE("the paper's potential as an expression agrees with seibert2011 on OpenCL to round-off") {
-    const std::string dev = first_opencl();
+    const std::string dev = awtest::first_opencl();
     if (!awtest::require(!dev.empty(), "expression-opencl", "no OpenCL device here (install pocl-opencl-icd)")) return;
     const Scene scene = small_scene();
     const Result builtin = awtest::run_on(dev, make_plan(scene));
@@ -96,7 +91,7 @@ TEST_SUITE("expression-opencl") {
   }
 
   TEST_CASE("an expression model in float compiles and runs on OpenCL") {
-    const std::string dev = first_opencl();
+    const std::string dev = awtest::first_opencl();
     if (!awtest::require(!dev.empty(), "expression-opencl", "no OpenCL device here (install pocl-opencl-icd)")) return;
     const Scene scene = small_scene({"integrator.precision=\"float\""});
     const Result expr = awtest::run_on(dev, as_expression(scene, awtest::paper_potential()));
@@ -106,7 +101,7 @@ TEST_SUITE("expression-opencl") {
   }
 
   TEST_CASE("every construct compiles as OpenCL C and conserves the energy of its Hamiltonian") {
-    const std::string dev = first_opencl();
+    const std::string dev = awtest::first_opencl();
     if (!awtest::require(!dev.empty(), "expression-opencl", "no OpenCL device here (install pocl-opencl-icd)")) return;
     // a smooth periodic potential with exp, sqrt, powers and a division, below E
     const Result r = awtest::run_on(

@@ -15,6 +15,7 @@
 
 #include "arnoldweb/arnoldweb.hpp"
 #include "arnoldweb/cluster.hpp"
+#include "run_outputs.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -27,27 +28,6 @@ const std::string kScene =
     "energy_error = { every = 0.5 }\nfinal_states = true\ninitial_states = true\n[output]\nimages = false\n";
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-nlohmann::json summary_of(const std::string& dir) {
-  std::ifstream in(dir + "/summary.json");
-  return nlohmann::json::parse(in);
-}
-
-void check_same_digests(const std::string& a, const std::string& b) {
-  const auto ja = summary_of(a), jb = summary_of(b);
-  CHECK(ja["digests"] == jb["digests"]);
-  CHECK(ja["completed"] == jb["completed"]);
-  CHECK(ja["binned"] == jb["binned"]);
-  CHECK(ja["energy_error"]["max"] == jb["energy_error"]["max"]);
-  CHECK(ja["energy_error"]["mean"] == jb["energy_error"]["mean"]);
-  CHECK(jb["interrupted"] == false);
-}
-
-std::string opencl_device() {
-  for (const auto& d : arnoldweb::list_devices())
-    if (d.backend == "opencl") return d.id;
-  return "";
-}
 
 // What "all" must give on this machine: the CUDA devices, else the OpenCL
 // devices that are not CPUs, else the default device.
@@ -146,35 +126,35 @@ TEST_SUITE("scale") {
 
 TEST_SUITE("devices") {
   TEST_CASE("cpu and PoCL in one process give the cpu backend's digests, from the CLI, the library and run.device") {
-    if (!awtest::require(!opencl_device().empty(), "devices", "no OpenCL device (PoCL) beside the cpu backend")) return;
-    const std::string both = "cpu," + opencl_device();
+    if (!awtest::require(!awtest::first_opencl().empty(), "devices", "no OpenCL device (PoCL) beside the cpu backend")) return;
+    const std::string both = "cpu," + awtest::first_opencl();
     const std::string root = awtest::temp_dir("devlist");
     const std::string scene = write_scene(root);
     REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", root + "/one"}) == 0);
     std::string text;
     REQUIRE(awtest::run_cli({"run", scene, "--device", both, "--out", root + "/two"}, &text) == 0);
     CAPTURE(text);
-    check_same_digests(root + "/one", root + "/two");
+    awtest::check_same_digests(root + "/one", root + "/two");
     CHECK(contains(text, "device       " + both + " ("));
     CHECK(contains(text, "one process, a thread per device"));
-    const auto j = summary_of(root + "/two");
+    const auto j = awtest::summary_of(root + "/two");
     CHECK(j["device"]["id"] == both);
     CHECK(contains(j["kernel"].get<std::string>(), "2 devices of this process (threads)"));
     // the same through the scene's run.device, and in the other order
-    REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--set", "run.device=\"" + opencl_device() + ",cpu\"", "--out",
+    REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--set", "run.device=\"" + awtest::first_opencl() + ",cpu\"", "--out",
                              root + "/scene-key"}) == 0);
-    check_same_digests(root + "/one", root + "/scene-key");
+    awtest::check_same_digests(root + "/one", root + "/scene-key");
     // both devices computed chunks: a job of many chunks spread over them
     const arnoldweb::Job job = arnoldweb::plan_job(awtest::scene_from(kScene, {"run.device=" + both}));
     const auto backends = arnoldweb::open_backends(job.main().scene.device);
     REQUIRE(backends.size() == 2);
     CHECK(backends[0]->info().id == "cpu");
-    CHECK(backends[1]->info().id == opencl_device());
+    CHECK(backends[1]->info().id == awtest::first_opencl());
   }
 
   TEST_CASE("a list stopped by SIGTERM checkpoints; resumed on the list, on one device: the uninterrupted digests") {
-    if (!awtest::require(!opencl_device().empty(), "devices", "no OpenCL device (PoCL) beside the cpu backend")) return;
-    const std::string both = "cpu," + opencl_device();
+    if (!awtest::require(!awtest::first_opencl().empty(), "devices", "no OpenCL device (PoCL) beside the cpu backend")) return;
+    const std::string both = "cpu," + awtest::first_opencl();
     const std::string root = awtest::temp_dir("devlist-term");
     const std::string scene = write_scene(root);
     const std::vector<std::string> longer = {"--set", "ensemble.trajectories=200000", "--set", "run.checkpoint_every=0.1"};
@@ -203,24 +183,24 @@ TEST_SUITE("devices") {
       CHECK(awtest::run_cli({"resume", out, "--device", resume_on}, &text) == 0);
       CAPTURE(text);
       CHECK(contains(text, "resuming"));
-      check_same_digests(root + "/plain", out);
+      awtest::check_same_digests(root + "/plain", out);
       CHECK(arnoldweb::find_checkpoints(out).empty());
     }
   }
 
   TEST_CASE("Ctrl-C to a list without checkpoints stops after the current chunks and writes what was computed") {
-    if (!awtest::require(!opencl_device().empty(), "devices", "no OpenCL device (PoCL) beside the cpu backend")) return;
+    if (!awtest::require(!awtest::first_opencl().empty(), "devices", "no OpenCL device (PoCL) beside the cpu backend")) return;
     const std::string root = awtest::temp_dir("devlist-int");
     const std::string scene = write_scene(root);
     const std::string out = root + "/out";
-    awtest::StartedCli cli = awtest::start_cli({"run", scene, "--device", "cpu," + opencl_device(), "--out", out, "--set",
+    awtest::StartedCli cli = awtest::start_cli({"run", scene, "--device", "cpu," + awtest::first_opencl(), "--out", out, "--set",
                                                 "ensemble.trajectories=400000", "--set", "run.checkpoint_every=\"off\""});
     REQUIRE(cli.wait_for("progress:", 120));
     ::kill(cli.pid, SIGINT);
     CHECK(cli.finish() == 130);
     CAPTURE(cli.output);
     CHECK(contains(cli.output, "what was computed was written to"));
-    const auto j = summary_of(out);
+    const auto j = awtest::summary_of(out);
     CHECK(j["interrupted"] == true);
     CHECK(j["completed"].get<std::uint64_t>() > 0);
     CHECK(j["completed"].get<std::uint64_t>() < 400000);
