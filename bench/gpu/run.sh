@@ -28,6 +28,9 @@
 # (bench/gpu/wheel.sh; issue 28).
 # fgl: build the program, then bench/gpu/fgl_rate.sh on the first CUDA device: the fgl rates that
 # size issue 26's frequency map and D(eps) scan (docs/frequencies.md).
+# multi: build the program, then bench/gpu/multi_gpu.sh: Figure 3 panel (a) on one GPU and on every
+# CUDA device driven by one process (--device cuda:0,cuda:1, then --device all), timed as whole
+# processes, with the ratio and the digests (issue 25 item 4; docs/cluster.md). Run it on nvidia-h200-x2.
 # Needs .device-deps/ (see docs/gpu.md): Debian packages the image lacks and
 # ../shared/gpu/device-setup.sh. Results go to $OUT (default ./gpu-out).
 set -uo pipefail
@@ -55,7 +58,7 @@ fi
 stamp "build"
 targets=""
 [ "$mode" = bench ] && targets="--target arnoldweb-cli arnoldweb_bench"
-[ "$mode" = accuracy ] || [ "$mode" = float ] || [ "$mode" = fgl ] && targets="--target arnoldweb-cli"
+[ "$mode" = accuracy ] || [ "$mode" = float ] || [ "$mode" = fgl ] || [ "$mode" = multi ] && targets="--target arnoldweb-cli"
 if ! cmake --build build-gpu -j"$(nproc)" $targets >>"$OUT/build.txt" 2>&1; then
   grep -E "error|Error" -A4 "$OUT/build.txt" | head -60; exit 1
 fi
@@ -85,6 +88,11 @@ if [ "$mode" = fgl ]; then
   stamp "fgl rates (issue 26 sizing)"
   CUDA0=$(first_cuda)
   timeout 560 bash bench/gpu/fgl_rate.sh build-gpu/arnoldweb "$CUDA0" | tee "$OUT/fgl_rate.txt"
+if [ "$mode" = multi ]; then
+  stamp "every GPU in one process: Figure 3 (a), one GPU against ${AW_MULTI_DEVICES:-every CUDA device}"
+  nproc; grep -m1 "model name" /proc/cpuinfo
+  timeout 300 bash bench/gpu/multi_gpu.sh build-gpu/arnoldweb /tmp/aw-multi "${AW_MULTI_DEVICES:-}" "${AW_MULTI_N:-}"
+  echo "multi rc=$?"
   stamp "done"
   exit 0
 fi

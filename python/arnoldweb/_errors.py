@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["Error", "SceneError", "DeviceError", "BuildError", "OutputError", "OutputRefused", "PlanWarning"]
+__all__ = ["Error", "SceneError", "DeviceError", "BuildError", "OutputError", "OutputRefused", "PlanWarning", "StateError"]
 
 
 class PlanWarning(UserWarning):
@@ -94,3 +94,21 @@ class OutputRefused(OutputError):
     """An output place arnoldweb refuses whatever the options: it would replace
     something arnoldweb did not write (the current directory, a directory holding
     the scene or other files)."""
+
+
+class StateError(Error, ValueError):
+    """Initial states that cannot be used (a state file, or ``initial=(X, P)``): a shape, a
+    type, a value that is not finite or out of range, or a state whose energy is far from
+    model.energy (docs/outputs.md, "State files").
+
+    Attributes: ``source`` (the file, or "initial" for arrays), ``dataset`` (the HDF5 dataset or
+    the array, "X" or "P"; "" if none), ``row`` (the state, counted from 0; -1 if none),
+    ``reason`` (the message without the place).
+    """
+
+    def __init__(self, message: str, source: str = "", dataset: str = "", row: int = -1, reason: str = ""):
+        super().__init__(message)
+        self.source = source
+        self.dataset = dataset
+        self.row = row
+        self.reason = reason or message

@@ -5,6 +5,7 @@
 
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
+#include <nanobind/ndarray.h>
 
 #include <exception>
 #include <memory>
@@ -22,7 +23,14 @@ nb::object json_loads(const std::string& text);
 
 // The scene as run planned into a job, "auto" steps resolved on the cpu
 // backend like the CLI does (cli/scene_args.cpp). Releases the GIL.
-arnoldweb::Job plan_scene(const arnoldweb::Scene& scene);
+// Arrays of rows of numbers, as numpy hands them (initial states).
+using Rows = nb::ndarray<const double, nb::c_contig, nb::device::cpu>;
+// Initial states from positions (radians or turns) and momenta, checked against
+// the scene's model with the rules of a state file (StateError naming the row).
+std::shared_ptr<arnoldweb::StateSet> states_of(const arnoldweb::Scene& scene, Rows x, Rows p, const std::string& units);
+
+// With `states`: the initial states of a scene whose ensemble.initial is "file" (Python's initial=).
+arnoldweb::Job plan_scene(const arnoldweb::Scene& scene, std::shared_ptr<const arnoldweb::StateSet> states = nullptr);
 
 // A fresh numpy array owning `values` (for what the library does not hold
 // contiguously, or what was read from a file).
@@ -51,5 +59,6 @@ void bind_run(nb::module_& m);
 void bind_accuracy(nb::module_& m);
 void bind_sphere(nb::module_& m);
 void bind_saved(nb::module_& m);
+void bind_states(nb::module_& m);
 
 }  // namespace awpy

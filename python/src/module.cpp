@@ -24,4 +24,5 @@ NB_MODULE(_arnoldweb, m) {
   awpy::bind_accuracy(m);
   awpy::bind_sphere(m);
   awpy::bind_saved(m);
+  awpy::bind_states(m);
 }

@@ -7,9 +7,13 @@
 // computed and written at the end (also after a stop), as `arnoldweb run` does.
 #include "bindings.hpp"
 
+#include <nanobind/stl/optional.h>
+
 #include <atomic>
 #include <nanobind/stl/shared_ptr.h>
 #include <nanobind/stl/string.h>
+
+#include "arnoldweb/cluster.hpp"
 
 namespace awpy {
 namespace {
@@ -65,10 +69,18 @@ void warn_plans(const arnoldweb::Job& job) {
     }
 }
 
-std::shared_ptr<RunRecord> run_scene(const arnoldweb::Scene& scene, nb::object progress, bool write, bool force) {
+std::shared_ptr<RunRecord> run_scene(const arnoldweb::Scene& scene, nb::object progress, bool write, bool force,
+                                     std::optional<Rows> x, std::optional<Rows> p, const std::string& units) {
   auto record = std::make_shared<RunRecord>();
   record->stop_exception = nb::none();
-  record->job = plan_scene(scene);
+  std::shared_ptr<arnoldweb::StateSet> initial;
+  arnoldweb::Scene s = scene;
+  if (x && p) {  // initial=(X, P): the trajectories start from them
+    s.initial = "file";
+    s.initial_file.clear();
+    initial = states_of(s, *x, *p, units);
+  }
+  record->job = plan_scene(s, std::move(initial));
   const arnoldweb::Job& job = record->job;
   warn_plans(job);
   arnoldweb::OutputOptions output;
@@ -76,19 +88,24 @@ std::shared_ptr<RunRecord> run_scene(const arnoldweb::Scene& scene, nb::object p
   {
     nb::gil_scoped_release unlocked;
     // everything is checked before any work: memory, then the output place
-    const arnoldweb::DeviceInfo device = arnoldweb::find_device(job.main().scene.device);
     const std::uint64_t host = arnoldweb::available_memory();
-    for (const arnoldweb::JobPart& part : job.parts) arnoldweb::check_memory(part.plan, device, host);
+    for (const std::string& id : arnoldweb::device_ids(job.main().scene.device)) {
+      const arnoldweb::DeviceInfo device = arnoldweb::find_device(id);
+      for (const arnoldweb::JobPart& part : job.parts) arnoldweb::check_memory(part.plan, device, host);
+    }
     if (write) {
       output.force = force;
       output.scene_file = scene.file;
       output.expected_bytes = arnoldweb::estimate_output_bytes(job);
       record->written_dir = arnoldweb::check_output_dir(job.main().scene.output_dir, output);
     }
-    auto backend = arnoldweb::open_backend(job.main().scene.device);
+    // every device run.device names (a list, "all"): one thread each
+    const auto backends = arnoldweb::open_backends(job.main().scene.device);
+    std::vector<arnoldweb::Backend*> devices;
+    for (const auto& b : backends) devices.push_back(b.get());
     arnoldweb::RunOptions options;
     options.stop = &hook.stop();
-    record->result = arnoldweb::run_job(job, *backend, options, &hook);
+    record->result = arnoldweb::run_job_on(job, devices, options, &hook);
     if (write) {
       // a failed write must not lose what was computed: the error is raised
       // by the package with the result attached
@@ -108,6 +125,7 @@ std::shared_ptr<RunRecord> run_scene(const arnoldweb::Scene& scene, nb::object p
 
 void bind_run(nb::module_& m) {
   m.def("_run", &run_scene, nb::arg("scene"), nb::arg("progress").none(), nb::arg("write"), nb::arg("force"),
+        nb::arg("x").none() = nb::none(), nb::arg("p").none() = nb::none(), nb::arg("units") = "radians",
         "Runs a scene and its panels; progress(done, total, seconds) after every chunk. With write, "
         "the scene's output.dir is checked first and written at the end. Returns the run's record.");
 }

@@ -1,7 +1,7 @@
 // Expression models on OpenCL (PoCL here): the paper's potential written as
 // an expression, its emitted header compiled in place of the built-in's,
-// agrees with the built-in seibert2011 to round-off; the cpu backend refuses
-// an expression model, naming PoCL. Most cases build the plan's kernel
+// agrees with the built-in seibert2011 to round-off (the cpu backend's run-time
+// kernel: test_expression_cpu.cpp). Most cases build the plan's kernel
 // configuration directly from a built-in scene; one checks that the scene's
 // route (model.kind = "expression") gives the same bits.
 #include <doctest/doctest.h>
@@ -13,6 +13,7 @@
 #include "../physics/expression_cases.hpp"
 #include "physics/expression/expression_model.hpp"
 #include "plan/plan_params.hpp"
+#include "run_outputs.hpp"
 #include "support.hpp"
 
 using namespace arnoldweb;
@@ -52,17 +53,11 @@ Plan as_expression(const Scene& scene, const std::string& text) {
   return p;
 }
 
-std::string first_opencl() {
-  for (const auto& d : list_devices())
-    if (d.backend == "opencl") return d.id;
-  return "";
-}
-
 }  // namespace
 
 TEST_SUITE("expression-opencl") {
   TEST_CASE("the paper's potential as an expression agrees with seibert2011 on OpenCL to round-off") {
-    const std::string dev = first_opencl();
+    const std::string dev = awtest::first_opencl();
     if (!awtest::require(!dev.empty(), "expression-opencl", "no OpenCL device here (install pocl-opencl-icd)")) return;
     const Scene scene = small_scene();
     const Result builtin = awtest::run_on(dev, make_plan(scene));
@@ -97,7 +92,7 @@ TEST_SUITE("expression-opencl") {
   }
 
   TEST_CASE("an expression model in float compiles and runs on OpenCL") {
-    const std::string dev = first_opencl();
+    const std::string dev = awtest::first_opencl();
     if (!awtest::require(!dev.empty(), "expression-opencl", "no OpenCL device here (install pocl-opencl-icd)")) return;
     const Scene scene = small_scene({"integrator.precision=\"float\""});
     const Result expr = awtest::run_on(dev, as_expression(scene, awtest::paper_potential()));
@@ -107,7 +102,7 @@ TEST_SUITE("expression-opencl") {
   }
 
   TEST_CASE("every construct compiles as OpenCL C and conserves the energy of its Hamiltonian") {
-    const std::string dev = first_opencl();
+    const std::string dev = awtest::first_opencl();
     if (!awtest::require(!dev.empty(), "expression-opencl", "no OpenCL device here (install pocl-opencl-icd)")) return;
     // a smooth periodic potential with exp, sqrt, powers and a division, below E
     const Result r = awtest::run_on(
@@ -116,17 +111,5 @@ TEST_SUITE("expression-opencl") {
     CHECK(r.flagged_nonfinite == 0);
     CHECK(r.energy.max < 1e-3);
     CHECK(r.energy.max > 0);
-  }
-}
-
-TEST_SUITE("expression") {
-  TEST_CASE("the cpu backend refuses an expression model and names PoCL") {
-    try {
-      awtest::run_on("cpu", as_expression(small_scene(), awtest::paper_potential()));
-      FAIL("the cpu backend ran an expression model");
-    } catch (const DeviceError& e) {
-      CHECK(std::string(e.what()).find("PoCL") != std::string::npos);
-      CHECK(std::string(e.what()).find("opencl:0") != std::string::npos);
-    }
   }
 }

@@ -20,7 +20,7 @@ def test_value_out_of_range_names_file_line_key():
 
 def test_message_is_the_clis(tmp_path):
     path = tmp_path / "bad.toml"
-    path.write_text("[model]\nenergy = -3\n")
+    path.write_text("[model]\nenergy = 2e6\n")
     with pytest.raises(aw.SceneError) as e:
         aw.Scene.from_file(path)
     cli = subprocess.run([cli_path(), "check", str(path)], capture_output=True, text=True)
@@ -62,6 +62,15 @@ def test_unknown_device(small_scene):
         aw.run(small_scene, device="opencl:99")
     assert e.value.device == "opencl:99"
     assert "devices present" in str(e.value)
+
+
+def test_device_lists_refused_before_any_work(small_scene):
+    with pytest.raises(aw.SceneError) as e:
+        aw.run(small_scene, device="cpu,cpu")
+    assert "cpu is listed twice" in str(e.value)
+    with pytest.raises(aw.DeviceError) as e:
+        aw.run(small_scene, device="cpu,opencl:99")
+    assert e.value.device == "opencl:99"
 
 
 def test_output_rules(small_scene, tmp_path):

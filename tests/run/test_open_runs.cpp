@@ -13,7 +13,12 @@
 #include <string>
 #include <vector>
 
+#include <fstream>
+#include <nlohmann/json.hpp>
+
 #include "arnoldweb/checkpoint.hpp"
+#include "arnoldweb/output.hpp"
+#include "run_outputs.hpp"
 #include "aw_params.h"
 #include "support.hpp"
 
@@ -222,5 +227,38 @@ TEST_SUITE("open-runs") {
       CHECK_FALSE(rest.interrupted);
       check_same_run(rest.results[0], ref.results[0]);
     }
+  }
+}
+
+TEST_SUITE("open-runs-cli") {
+  TEST_CASE("arnoldweb continue OUT --for T: 2T is T continued for T (final states, maps, time), and bad input is refused") {
+    const std::string dir = awtest::temp_dir("continue");
+    const std::string scene = dir + "/scene.toml";
+    std::ofstream(scene) << "[ensemble]\ntrajectories = 1500\nseed = 5\n[integrator]\nstep = 0.01\n"
+                            "[run]\naverage = 2\nduration = 4\ndevice = \"cpu\"\n"
+                            "[observe]\nvelocity_map = { nside = 8 }\nenergy_error = { every = 1 }\nfinal_states = true\n"
+                            "[output]\nimages = false\n";
+    REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--out", dir + "/both"}) == 0);
+    REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--out", dir + "/first", "--set", "run.duration=2"}) == 0);
+    std::string out;
+    REQUIRE(awtest::run_cli({"continue", dir + "/first", "--for", "2", "--quiet"}, &out) == 0);
+    const std::string second = dir + "/first-to-4";
+    const nlohmann::json both = awtest::summary_of(dir + "/both"), cont = awtest::summary_of(second);
+    CHECK(cont["digests"]["final_states"] == both["digests"]["final_states"]);
+    CHECK(cont["time"]["start"] == 2.0);
+    CHECK(cont["time"]["end"] == 4.0);
+    CHECK(cont["scene"]["ensemble"]["initial"] == "file");
+    const SavedMaps a = read_saved_maps(dir + "/both"), b = read_saved_maps(dir + "/first"), c = read_saved_maps(second);
+    REQUIRE(a.map.size() == b.map.size());
+    REQUIRE(c.map.size() == a.map.size());
+    for (std::size_t i = 0; i < a.map.size(); ++i) CHECK(a.map[i] == b.map[i] + c.map[i]);
+    // a run without final states, a duration of 0, a directory that is no run: exit 2 or 3, nothing written
+    REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--out", dir + "/nostates", "--set", "observe.final_states=false"}) == 0);
+    CHECK(awtest::run_cli({"continue", dir + "/nostates", "--for", "2", "--quiet"}, &out) == 3);
+    CHECK(out.find("observe.final_states") != std::string::npos);
+    CHECK(awtest::run_cli({"continue", dir + "/first", "--for", "0", "--quiet", "--out", dir + "/zero"}, &out) == 2);
+    CHECK(awtest::run_cli({"continue", dir, "--for", "2", "--quiet", "--out", dir + "/none"}, &out) == 3);
+    CHECK_FALSE(std::ifstream(dir + "/zero/summary.json"));
+    CHECK_FALSE(std::ifstream(dir + "/none/summary.json"));
   }
 }

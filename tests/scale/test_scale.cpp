@@ -18,6 +18,7 @@
 
 #include "arnoldweb/arnoldweb.hpp"
 #include "arnoldweb/cluster.hpp"
+#include "run_outputs.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -48,26 +49,6 @@ class Keep final : public arnoldweb::CheckpointSink {
   void save(const std::string& image) override { images.push_back(image); }
   std::vector<std::string> images;
 };
-
-std::string opencl_device() {
-  for (const auto& d : arnoldweb::list_devices())
-    if (d.backend == "opencl") return d.id;
-  return "";
-}
-
-nlohmann::json summary_of(const std::string& dir) {
-  std::ifstream in(dir + "/summary.json");
-  return nlohmann::json::parse(in);
-}
-
-void check_same_digests(const std::string& a, const std::string& b) {
-  const auto ja = summary_of(a), jb = summary_of(b);
-  CHECK(ja["digests"] == jb["digests"]);
-  CHECK(ja["completed"] == jb["completed"]);
-  CHECK(ja["binned"] == jb["binned"]);
-  CHECK(ja["energy_error"]["max"] == jb["energy_error"]["max"]);
-  CHECK(jb["interrupted"] == false);
-}
 
 std::string mpirun_path() {
   for (const char* p : {"/usr/bin/mpirun", "/usr/local/bin/mpirun"})
@@ -127,7 +108,7 @@ TEST_SUITE("scale") {
     const arnoldweb::Result plain = arnoldweb::run(job.main(), *plain_dev);
     std::vector<std::unique_ptr<arnoldweb::Backend>> owned;
     std::vector<std::string> ids = {"cpu", "cpu", "cpu"};
-    if (!opencl_device().empty()) ids.push_back(opencl_device());
+    if (!awtest::first_opencl().empty()) ids.push_back(awtest::first_opencl());
     for (const auto& id : ids) owned.push_back(arnoldweb::open_backend(id));
     for (std::size_t n = 1; n <= owned.size(); ++n) {
       CAPTURE(n);
@@ -233,7 +214,7 @@ TEST_SUITE("mpi") {
     std::ofstream(scene) << kScene;
     REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", root + "/plain"}) == 0);
     std::vector<std::string> devices = {"cpu"};
-    if (!opencl_device().empty()) devices.push_back(opencl_device());
+    if (!awtest::first_opencl().empty()) devices.push_back(awtest::first_opencl());
     for (const auto& device : devices) {
       for (int n = 1; n <= 3; ++n) {
         CAPTURE(device);
@@ -243,7 +224,7 @@ TEST_SUITE("mpi") {
         const int rc = awtest::run_cli({"run", scene, "--device", device, "--out", out}, &text, mpirun(n));
         CAPTURE(text);
         REQUIRE(rc == 0);
-        check_same_digests(root + "/plain", out);
+        awtest::check_same_digests(root + "/plain", out);
         // one progress stream (rank 0's totals) and one report
         CHECK(std::count(text.begin(), text.end(), '\n') < 40);
         if (n > 1) CHECK(text.find("ranks        " + std::to_string(n)) != std::string::npos);
@@ -256,7 +237,7 @@ TEST_SUITE("mpi") {
       CHECK(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu," + devices[1], "--out", out}, &text, mpirun(2)) ==
             0);
       CAPTURE(text);
-      check_same_digests(root + "/plain", out);
+      awtest::check_same_digests(root + "/plain", out);
     }
   }
 
@@ -301,7 +282,7 @@ TEST_SUITE("mpi") {
         if (rc == 0) ++resumed;
         else REQUIRE(awtest::run_cli(args(out)) == 0);
       }
-      check_same_digests(root + "/plain", out);
+      awtest::check_same_digests(root + "/plain", out);
       CHECK(arnoldweb::find_checkpoints(out).empty());
     }
     CHECK(resumed >= 1);

@@ -86,11 +86,28 @@ class Backend {
 // Open a device by id: "cpu", "opencl:N", "cuda:N", or "auto" (the first GPU,
 // else the first OpenCL device, else cpu). The environment variable
 // ARNOLDWEB_DEVICE, when set, replaces "auto". Throws DeviceError with the
-// list of devices and, where a platform is missing, how to install one.
+// list of devices and, where a platform is missing, how to install one; a
+// value that names several devices (a list, or "all" on a machine with
+// several GPUs) is a SceneError: open_backends opens them.
 std::unique_ptr<Backend> open_backend(const std::string& id);
 
 // The id "auto" resolves to on this machine.
 std::string default_device_id();
+
+// The devices a run.device value names, as ids of this machine, in order
+// (docs/cluster.md): "auto" as open_backend resolves it (ARNOLDWEB_DEVICE may
+// itself be a list or "all"); "all": every GPU, each once: the CUDA devices,
+// else the OpenCL devices that are not CPUs, and on a machine without a GPU
+// the default device alone; a list "cuda:0,cuda:1": its ids. Throws
+// SceneError (exit 2) for a malformed value or an id listed twice, DeviceError
+// (exit 4) for a device this machine lacks, with the list of those present.
+std::vector<std::string> device_ids(const std::string& device);
+// Opens every device of device_ids(device), in that order.
+std::vector<std::unique_ptr<Backend>> open_backends(const std::string& device);
+// What a result names when several devices computed it: the ids joined by
+// ",", the names ("2 x NVIDIA H200", or "AMD EPYC + pthread-..."), the compute
+// units and memory summed. One device: its own description.
+DeviceInfo describe_devices(const std::vector<DeviceInfo>& devices);
 
 // The description of the device `id` ("auto" as open_backend resolves it)
 // without opening it; throws DeviceError like open_backend when there is none.

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,9 @@ using StepResolver = std::function<Scene(const Scene&)>;
 // the panel's overrides, then the scene's own overrides). A part whose step is
 // "auto" is resolved with `resolve` first (without one it is refused). Throws
 // SceneError.
-Job plan_job(const Scene& scene, const StepResolver& resolve = {});
+// Parts that start from given states (ensemble.initial = "file") read them
+// from ensemble.file, or take `states` (Python's initial=) when the scene names
+// no file; a part with neither is refused.
+Job plan_job(const Scene& scene, const StepResolver& resolve = {}, std::shared_ptr<const StateSet> states = nullptr);
 
 }  // namespace arnoldweb

@@ -92,6 +92,9 @@ struct Plan {
   std::shared_ptr<const StateSet> states;
 
   std::vector<std::string> effects() const { return feature_names(kernel.features); }
+  // When the trajectories start, in T: the time of the states they start from
+  // (a continued run), else 0. They end run.duration later.
+  double start_time() const { return states && states->has_time ? states->time : 0.0; }
 };
 
 // Validate the scene as a whole and build the plan: a pure function of the

@@ -70,6 +70,9 @@ struct Scene {
   std::array<double, 2> box_lat = {-5.0, 5.0};     // ensemble.box.lat, degrees
   std::array<double, 2> gaussian_mean = {0.0, 0.0};     // ensemble.gaussian.mean (p_x, p_y)
   std::array<double, 2> gaussian_sigma = {0.01, 0.01};  // ensemble.gaussian.sigma
+  // ensemble.file: the HDF5 file of the states for ensemble.initial = "file"
+  // (states.hpp; relative to the current directory); "" when none
+  std::string initial_file;
 
   // [integrator]
   std::string method = "yoshida6a";
@@ -170,6 +173,15 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
 Scene parse_scene(const std::string& text, const std::string& file,
                   const std::vector<std::string>& overrides = {},
                   const std::vector<std::string>& labels = {});
+
+// run.device (docs/cluster.md): "auto", "all", one device id or a list of ids
+// separated by commas ("cuda:0,cuda:1"). The entries of a value as written: a
+// list's ids in order, any other value on its own.
+std::vector<std::string> device_entries(const std::string& device);
+// Whether `id` is one device id: "cpu", "opencl:N" or "cuda:N".
+bool is_device_id(const std::string& id);
+// The first id that a list names twice, or "".
+std::string repeated_device(const std::string& device);
 
 // All keys a scene may contain, with their type and allowed values, for docs
 // and `arnoldweb check`.

@@ -60,12 +60,16 @@ void write_dataset(H5Writer& h, hid_t where, const OutputDataset& d) {
   if (!d.meaning.empty()) h.attr(set, "meaning", d.meaning);
 }
 
-// An attribute a row asks for (RecordOutput::attributes) from the plan.
+// An attribute a row asks for (RecordOutput::attributes) from the plan, on its group.
 void plan_attribute(H5Writer& h, hid_t where, const std::string& name, const Plan& plan) {
   if (name == "duration")
     h.attr(where, "duration", plan.scene.duration);
   else if (name == "tangent_initial")
     h.attr(where, "tangent_initial", plan.scene.tangent_initial);
+  else if (name == "time_start")  // when the states were taken, in T (a state file's time)
+    h.attr(where, "time", plan.start_time());
+  else if (name == "time_end")
+    h.attr(where, "time", plan.start_time() + plan.scene.duration);
   else
     throw OutputError(name, "the output table names an attribute the writer does not know");
 }
@@ -85,7 +89,7 @@ void write_records_hdf5(const std::string& path, const std::string& file, const 
       for (const OutputDataset& d : datasets)
         if (d.output == row.name) write_dataset(h, where, d);
       h.attr(where, "digest", digest_records(r, row.name));
-      for (const std::string& a : row.attributes) plan_attribute(h, h.root(), a, plan);
+      for (const std::string& a : row.attributes) plan_attribute(h, where, a, plan);
       grid = grid || (row.grid_shaped && s.initial == "grid");
     }
     if (grid) write_grid(h, s);

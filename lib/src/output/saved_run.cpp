@@ -9,20 +9,12 @@
 
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/output.hpp"
+#include "output/hdf5_handle.hpp"
 
 namespace arnoldweb {
 namespace {
 
 namespace fs = std::filesystem;
-
-// An HDF5 handle, closed with its own close function on every path out.
-struct Handle {
-  hid_t id;
-  herr_t (*close)(hid_t);
-  ~Handle() {
-    if (id >= 0) close(id);
-  }
-};
 
 // A dataset of uint64 counts, or an empty vector when the file has none by
 // that name; its dimensions go to *dims.
@@ -31,9 +23,9 @@ std::vector<std::uint64_t> read_counts(hid_t file, const char* name, const std::
   std::vector<std::uint64_t> v;
   dims->clear();
   if (H5Lexists(file, name, H5P_DEFAULT) <= 0) return v;
-  const Handle d{H5Dopen2(file, name, H5P_DEFAULT), H5Dclose};
+  const H5Handle d{H5Dopen2(file, name, H5P_DEFAULT), H5Dclose};
   if (d.id < 0) throw OutputError(path, std::string("cannot open the dataset ") + name);
-  const Handle space{H5Dget_space(d.id), H5Sclose};
+  const H5Handle space{H5Dget_space(d.id), H5Sclose};
   const int rank = space.id < 0 ? -1 : H5Sget_simple_extent_ndims(space.id);
   if (rank < 1) throw OutputError(path, std::string("the dataset ") + name + " has no shape");
   dims->resize(static_cast<std::size_t>(rank));
@@ -42,7 +34,7 @@ std::vector<std::uint64_t> read_counts(hid_t file, const char* name, const std::
   if (!v.empty() && H5Dread(d.id, H5T_NATIVE_UINT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
     throw OutputError(path, std::string("cannot read the dataset ") + name + " as unsigned 64-bit counts");
   if (nside && H5Aexists(d.id, "nside") > 0) {
-    const Handle a{H5Aopen(d.id, "nside", H5P_DEFAULT), H5Aclose};
+    const H5Handle a{H5Aopen(d.id, "nside", H5P_DEFAULT), H5Aclose};
     if (a.id < 0 || H5Aread(a.id, H5T_NATIVE_INT64, nside) < 0)
       throw OutputError(path, std::string("cannot read the attribute nside of ") + name);
   }
@@ -71,7 +63,7 @@ int read_map_h5(const std::string& dir, Result& r) {
     throw OutputError(path, "missing: the run made neither a velocity map nor a zoom "
                             "(observe.velocity_map, observe.zoom)");
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const Handle f{H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
+  const H5Handle f{H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
   if (f.id < 0) throw OutputError(path, "cannot open it (not an HDF5 file?)");
   std::vector<hsize_t> dims;
   std::int64_t nside = 0;

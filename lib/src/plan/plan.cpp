@@ -15,6 +15,7 @@
 #include "plan/effects.hpp"
 #include "plan/indicators.hpp"
 #include "plan/model_plan.hpp"
+#include "plan/plan_states.hpp"
 #include "plan/plan_params.hpp"
 #include "plan/output_table.hpp"
 #include "plan/schedule.hpp"
@@ -163,7 +164,8 @@ void fill_ints(const Scene& scene, const Plan& p, detail::IntParams& ip) {
 }  // namespace
 
 Plan make_plan(const Scene& scene_as_written) {
-  const Scene scene = detail::with_grid_size(scene_as_written);
+  Scene scene = detail::with_grid_size(scene_as_written);
+  std::shared_ptr<StateSet> states = detail::read_scene_states(scene);  // ensemble.initial = "file"
   if (scene.step_auto)
     fail_at(scene, "integrator.step",
             "\"auto\" is resolved before planning, by a pilot ensemble on a device: resolve_step(scene, backend) "
@@ -174,6 +176,10 @@ Plan make_plan(const Scene& scene_as_written) {
   const detail::ModelDescriptor& model = detail::model_of(scene);
   p.model = &model;
   detail::plan_model_values(scene, model, params->reals);
+  if (states) {
+    detail::check_scene_states(*states, scene, model, params->reals);
+    p.states = std::move(states);
+  }
   plan_method(scene, p);
   if (scene.initial == "grid")
     detail::plan_grid(scene, model, params->reals, p);

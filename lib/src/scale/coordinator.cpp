@@ -129,7 +129,7 @@ class PartCoordinator {
 }  // namespace
 
 JobResult coordinate_job(const Job& job, Transport& transport, const RunOptions& options, JobObserver* observer,
-                         const DeviceInfo& device, const std::string& kernel) {
+                         const DeviceInfo& device, const std::function<std::string()>& kernel) {
   for (const JobPart& part : job.parts) {
     require_states(part.plan);
     if (part.plan.slices > 1 && transport.workers() > 1)
@@ -143,7 +143,6 @@ JobResult coordinate_job(const Job& job, Transport& transport, const RunOptions&
   if (options.checkpoint && options.checkpoint->sink) cp = std::make_unique<JobCheckpoints>(job, *options.checkpoint);
   PartReductions parts;
   if (cp) parts = cp->resume();
-  const std::string ranks = "; " + std::to_string(transport.workers()) + " devices (MPI ranks)";
   for (std::size_t k = 0; k < job.parts.size(); ++k) {
     const Plan& plan = job.parts[k].plan;
     Result r;
@@ -162,7 +161,7 @@ JobResult coordinate_job(const Job& job, Transport& transport, const RunOptions&
       double seconds = 0;
       const bool stopped = part.run(seconds);
       r = parts[k]->result();
-      r.kernel = kernel + ranks;
+      r.kernel = kernel();
       r.interrupted = stopped;
       if (o.progress) o.progress->finish(r.completed, plan.scene.trajectories, r.wall_seconds);
     }

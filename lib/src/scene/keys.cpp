@@ -7,6 +7,7 @@
 // Adding a key: a field in Scene (scene.hpp) and a row here.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "arnoldweb/methods.hpp"
 #include "physics/model_table.hpp"
@@ -325,7 +326,25 @@ void ensemble_keys(Rows& add) {
       "How initial states are drawn; X is uniform on the accessible part of the torus. "
       "\"shell\": direction of P uniform on the sphere, speed sqrt(2 (E - V(X))). \"cap\", "
       "\"box\": direction uniform in ensemble.cap or ensemble.box. \"gaussian\": see "
-      "ensemble.gaussian. \"grid\": the points of ensemble.grid, in order.");
+      "ensemble.gaussian. \"grid\": the points of ensemble.grid, in order. \"file\": the states of "
+      "ensemble.file, one trajectory per state (docs/outputs.md, \"State files\").");
+  add("ensemble.file", "string", "an existing file", "a string naming an existing file (HDF5, docs/outputs.md)",
+      [](const Scene& s) { return s.initial_file.empty() ? std::string() : toml_string(s.initial_file); },
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        std::string path;
+        if (!r.text(key, n, path, [](const std::string& p) { return !p.empty(); })) return;
+        std::error_code ec;
+        const auto status = std::filesystem::status(path, ec);
+        if (!std::filesystem::exists(status))
+          r.bad(key, n, true, " (no such file)");
+        else if (!std::filesystem::is_regular_file(status))
+          r.bad(key, n, true, std::filesystem::is_directory(status) ? " (it is a directory)" : " (not a regular file)");
+        else
+          s.initial_file = path;
+      },
+      "For ensemble.initial = \"file\": the HDF5 file of the initial states (positions, momenta, "
+      "optional winding counts and time; or the /final group of a states.h5), relative to the current "
+      "directory. Read and checked when the scene is planned (docs/outputs.md, \"State files\").");
   add("ensemble.chunk", "integer", ">= 0 (0 = automatic)", "an integer >= 0 (0 = automatic)",
       integer_of(&Scene::chunk), integer_into(&Scene::chunk, at_least_0),
       "Trajectories per kernel launch; 0 lets the runner choose. Does not change the results.");
@@ -412,12 +431,23 @@ void run_keys(Rows& add) {
       "Time slices of long trajectories, in T (0: none): each slice advances every trajectory of the run by this "
       "much, and a checkpoint between slices holds their whole state (docs/cluster.md, \"Long trajectories\"); a "
       "multiple of observe.energy_error.every (of run.average without energy tracking).");
-  const std::string forms = "\"auto\", \"cpu\", \"opencl:N\" or \"cuda:N\"";
-  add("run.device", "string", forms, forms + " (N = 0, 1, ...: the index in `arnoldweb devices`)",
+  const std::string forms = "\"auto\", \"all\", \"cpu\", \"opencl:N\", \"cuda:N\" or a list \"cuda:0,cuda:1\"";
+  add("run.device", "string", forms,
+      forms + " (N = 0, 1, ...: the index in `arnoldweb devices`; a list names each device once)",
       text_of(&Scene::device),
-      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) { r.text(key, n, s.device, valid_device); },
-      "Where to run. \"auto\" picks the default device; whether the device exists is checked "
-      "when the run starts.");
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        std::string device;
+        if (!r.text(key, n, device, valid_device)) return;
+        if (const std::string twice = repeated_device(device); !twice.empty()) {
+          r.bad(key, n, true, " (" + twice + " is listed twice)");
+          return;
+        }
+        s.device = device;
+      },
+      "Where to run. \"auto\" picks the default device; a list of ids (\"cuda:0,cuda:1\") runs on "
+      "every device listed, from one process (under mpirun, each rank drives its entry); \"all\" "
+      "is every GPU of the machine (the CUDA devices, else the OpenCL GPUs; without a GPU, the "
+      "default device). Whether the devices exist is checked when the run starts (docs/cluster.md).");
   // run.checkpoint_every (checkpoints, issue 15): "auto", "off", seconds or "<number> <unit>"
   add("run.checkpoint_every", "float or string", "\"auto\", \"off\", seconds > 0, or \"N s\", \"N min\", \"N h\"",
       "\"auto\", \"off\", a number of seconds greater than 0, or a string such as \"10 min\" "

@@ -70,7 +70,8 @@ std::vector<std::string> names_of(const Table& t) {
   for (const auto& e : t) n.push_back(e.name);
   return n;
 }
-bool valid_device(const std::string& id);
+// run.device: "auto", "all", or one or more device ids separated by commas (device_spec.cpp).
+bool valid_device(const std::string& device);
 
 // Limits shared by the checks and the key table.
 constexpr double kMaxEnergy = 1e6;

@@ -13,6 +13,7 @@
 #include "backends/compute_device.hpp"
 #include "backends/cpu/cpu_isa.hpp"
 #include "backends/cpu/cpu_kernel.hpp"
+#include "backends/cpu/cpu_runtime_kernel.hpp"
 
 namespace arnoldweb::detail {
 namespace {
@@ -66,18 +67,21 @@ class CpuDevice final : public ComputeDevice {
   void compile(const KernelConfig& k) override {
     const bool fl = k.precision == Precision::Float;
     const bool native = k.math == MathMode::Native;
-    if (!k.model_source.empty())  // docs/models.md, "Expression models": why the cpu backend does not
-      throw DeviceError(info_.id, "", 0,
-                        "the cpu backend runs the built-in models only (its kernels are compiled ahead of "
-                        "time); run model.kind = \"expression\" on an OpenCL device such as PoCL "
-                        "(--device opencl:0; `arnoldweb devices` lists them) or on cuda:N");
     const CpuIsa& isa = cpu_isa_selected();  // the best compiled set this CPU runs, or ARNOLDWEB_CPU_ISA
-    kernel_ = cpu_kernel_for(k.model, fl, native, isa);
-    if (!kernel_)
-      throw DeviceError(info_.id, "", 0, "this build has no cpu kernel for model " + std::to_string(k.model));
+    const std::string lanes = std::to_string(fl ? isa.lanes_float : isa.lanes_double) + " lanes";
+    if (!k.model_source.empty()) {  // an expression model: compiled now, for the same set (docs/models.md)
+      const CpuRuntimeKernel rk = cpu_expression_kernel(k.model_source, fl, native);
+      kernel_ = rk.kernel;
+      variant_ = rk.variant + " (" + isa.name + ", " + lanes + "; compiled at run time by " + rk.compiler + "; " +
+                 rk.origin + ")";
+    } else {
+      kernel_ = cpu_kernel_for(k.model, fl, native, isa);
+      if (!kernel_)
+        throw DeviceError(info_.id, "", 0, "this build has no cpu kernel for model " + std::to_string(k.model));
+      variant_ = std::string("cpu_") + (fl ? "float" : "double") + "_" + (native ? "native" : "portable") + " (" +
+                 isa.name + ", " + lanes + ")";
+    }
     config_ = k;
-    variant_ = std::string("cpu_") + (fl ? "float" : "double") + "_" + (native ? "native" : "portable") + " (" +
-               isa.name + ", " + std::to_string(fl ? isa.lanes_float : isa.lanes_double) + " lanes)";
   }
   std::string kernel_description() const override { return variant_; }
 
