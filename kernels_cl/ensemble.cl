@@ -15,7 +15,7 @@ __kernel void aw_ensemble(ulong chunk_first, ulong chunk_end, long seg_first, lo
   aw_lanes l = {chunk_first + (ulong)get_global_id(0) * AW_LANES, chunk_end, chunk_first};
   real emax = 0, esum = 0;
   if (l.first < chunk_end) {
-    aw_outputs out = {hist, counters, rec_r, rec_i};
+    aw_outputs out = {hist, counters, rec_r, rec_i, series};
     aw_ensemble_item(cfg, l, seg_first, seg_end, rp, ip, out, &emax, &esum);
   }
   aw_group_reduce(scratch, (int)get_local_id(0), (int)get_local_size(0), get_group_id(0), emax,

@@ -33,7 +33,7 @@ extern "C" __global__ void __launch_bounds__(AW_CUDA_MAX_BLOCK, AW_CUDA_MIN_BLOC
   aw_lanes l = {chunk_first + ((aw_u64)blockIdx.x * blockDim.x + threadIdx.x), chunk_end, chunk_first};
   real emax = 0, esum = 0;
   if (l.first < chunk_end) {
-    aw_outputs out = {hist, counters, rec_r, rec_i};
+    aw_outputs out = {hist, counters, rec_r, rec_i, series};
     aw_ensemble_item(cfg, l, seg_first, seg_end, rp, ip, out, &emax, &esum);
   }
   aw_group_reduce(scratch, (int)threadIdx.x, (int)blockDim.x, blockIdx.x, emax, esum, group_stats);

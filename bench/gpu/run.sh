@@ -28,6 +28,10 @@
 # (bench/gpu/wheel.sh; issue 28).
 # fgl: build the program, then bench/gpu/fgl_rate.sh on the first CUDA device: the fgl rates that
 # size issue 26's frequency map and D(eps) scan (docs/frequencies.md).
+# science: build the program and the tests, the GPU suites of issues 25 and 26 (parity, open runs,
+# frequencies on CUDA and NVIDIA OpenCL), then bench/gpu/science.sh on the first CUDA device: the
+# cost of observe.frequencies, the FGL frequency map beside its FLI map, the D(eps) scan, a sliced
+# Figure-4 run killed with kill -9 and resumed (docs/frequencies.md, docs/gallery.md, docs/cluster.md).
 # multi: build the program, then bench/gpu/multi_gpu.sh: Figure 3 panel (a) on one GPU and on every
 # CUDA device driven by one process (--device cuda:0,cuda:1, then --device all), timed as whole
 # processes, with the ratio and the digests (issue 25 item 4; docs/cluster.md). Run it on nvidia-h200-x2.
@@ -59,6 +63,7 @@ stamp "build"
 targets=""
 [ "$mode" = bench ] && targets="--target arnoldweb-cli arnoldweb_bench"
 [ "$mode" = accuracy ] || [ "$mode" = float ] || [ "$mode" = fgl ] || [ "$mode" = multi ] && targets="--target arnoldweb-cli"
+[ "$mode" = science ] && targets="--target arnoldweb-cli arnoldweb_tests"
 if ! cmake --build build-gpu -j"$(nproc)" $targets >>"$OUT/build.txt" 2>&1; then
   grep -E "error|Error" -A4 "$OUT/build.txt" | head -60; exit 1
 fi
@@ -88,6 +93,23 @@ if [ "$mode" = fgl ]; then
   stamp "fgl rates (issue 26 sizing)"
   CUDA0=$(first_cuda)
   timeout 560 bash bench/gpu/fgl_rate.sh build-gpu/arnoldweb "$CUDA0" | tee "$OUT/fgl_rate.txt"
+  stamp "done"
+  exit 0
+fi
+if [ "$mode" = science ]; then
+  CUDA0=$(first_cuda)
+  nproc; grep -m1 "model name" /proc/cpuinfo; nvidia-smi --query-gpu=name,driver_version --format=csv,noheader
+  stamp "GPU suites of issues 25 and 26 (open runs, frequencies) and the parity suites"
+  (cd build-gpu && ctest --output-on-failure --timeout 300 \
+     -R "^(parity\.cuda|parity\.opencl|open-runs\.cuda|open-runs\.opencl|frequency-runs\.cuda|frequency-runs\.opencl|order\.cuda)$") \
+     >"$OUT/ctest.txt" 2>&1
+  grep -E "tests passed|Passed|Failed|\*\*\*" "$OUT/ctest.txt"
+  stamp "issue 25 and 26 measurements (bench/gpu/science.sh) on $CUDA0"
+  timeout 400 bash bench/gpu/science.sh build-gpu/arnoldweb "$CUDA0" "$OUT/science"
+  (cd "$OUT" && tar czf science.tgz science && rm -rf science)
+  stamp "done"
+  exit 0
+fi
 if [ "$mode" = multi ]; then
   stamp "every GPU in one process: Figure 3 (a), one GPU against ${AW_MULTI_DEVICES:-every CUDA device}"
   nproc; grep -m1 "model name" /proc/cpuinfo

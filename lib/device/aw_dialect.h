@@ -340,4 +340,13 @@ typedef AW_CAT(ulong, AW_LANES) lbits;
 #endif
 #endif
 
+/* q = a / b with the remainder *r = a - q b. Written out, not as a % b beside
+ * a / b: LLVM's DivRemPairs pass turns that pair into `freeze` instructions,
+ * which Oclgrind 21.10's --uninitialized plugin stops at (tests/oclgrind). */
+AW_FN aw_i64 aw_divrem(aw_i64 a, aw_i64 b, aw_i64* r) {
+  const aw_i64 q = a / b;
+  *r = a - q * b;
+  return q;
+}
+
 #endif /* AW_DIALECT_H */

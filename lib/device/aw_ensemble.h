@@ -51,14 +51,15 @@ AW_FN void aw_ensemble_item(aw_config cfg, aw_lanes l, aw_i64 seg_first, aw_i64 
   aw_fx_first_force(cfg, &fx, &s, rp);
 
   for (aw_i64 k = seg_first; k < seg_end; ++k) {
-    const aw_i64 g = k % segments;
+    aw_i64 g;
+    const aw_i64 window = aw_divrem(k, segments, &g);
     if (g == 0) {
       ws.ux = s.ux, ws.uy = s.uy, ws.uz = s.uz;
       ws.wx = s.wx, ws.wy = s.wy, ws.wz = s.wz;
       aw_fx_window_begin(cfg, &fx);
     }
     aw_fx_segment(cfg, &fx, &s, ip->steps_per_segment, rp);
-    aw_fx_sample(cfg, &fx, &s, rp);
+    aw_fx_sample(cfg, &fx, &s, k, l, rp, ip, out);
     if (g == segments - 1) {
       /* displacement over the window, in turns: exact integer part + wrapped part */
       lreal dx = AW_INT_TO_LANE(s.wx - ws.wx) + (s.ux - ws.ux);
@@ -67,7 +68,7 @@ AW_FN void aw_ensemble_item(aw_config cfg, aw_lanes l, aw_i64 seg_first, aw_i64 
       lreal sane = AW_SELECT(AW_LSPLAT(AW_R(0.0)), AW_LSPLAT(AW_R(1.0)),
                              AW_ISFINITE(s.ux) & AW_ISFINITE(s.uy) & AW_ISFINITE(s.uz) & AW_ISFINITE(s.px) &
                                  AW_ISFINITE(s.py) & AW_ISFINITE(s.pz));
-      aw_fx_window_end(cfg, &fx, k / segments, dx, dy, dz, sane, l, rp, ip, out);
+      aw_fx_window_end(cfg, &fx, window, dx, dy, dz, sane, l, rp, ip, out);
     }
   }
   if (seg_end < ip->windows * segments) { /* a time slice: the next launch goes on from here */

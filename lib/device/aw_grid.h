@@ -39,8 +39,9 @@ AW_FN void aw_pix2zphi_ring(aw_i64 nside, aw_i64 p, real* z, real* phi_turns) {
     *phi_turns = ((real)iphi - AW_R(0.5)) / (real)(4 * ring);
   } else if (p < npix - ncap) { /* equatorial belt */
     const aw_i64 q = p - ncap;
-    const aw_i64 ring = q / (4 * nside) + nside;
-    const aw_i64 iphi = q % (4 * nside) + 1;
+    aw_i64 col;
+    const aw_i64 ring = aw_divrem(q, 4 * nside, &col) + nside;
+    const aw_i64 iphi = col + 1;
     const real shift = ((ring + nside) & 1) ? AW_R(1.0) : AW_R(0.5);
     *z = (real)(2 * (2 * nside - ring)) / (AW_R(3.0) * (real)nside);
     *phi_turns = ((real)iphi - shift) / (real)(4 * nside);
@@ -66,7 +67,8 @@ AW_FN lreal aw_grid_state(aw_lstate* s, aw_u64 first, AW_CONSTANT aw_rparams* rp
       const aw_i64 npix = 12 * n0 * n0;
       aw_pix2zphi_ring(n0, i < npix ? i : npix - 1, &a[j], &b[j]); /* a = z, b = azimuth */
     } else {
-      const aw_i64 col = i % n0, row = (i / n0 < n1) ? i / n0 : n1 - 1;
+      aw_i64 col;
+      const aw_i64 r = aw_divrem(i, n0, &col), row = r < n1 ? r : n1 - 1;
       a[j] = AW_FMA(((real)col + AW_R(0.5)) / (real)n0, rp->grid_width[0], rp->grid_lo[0]);
       b[j] = AW_FMA(((real)row + AW_R(0.5)) / (real)n1, rp->grid_width[1], rp->grid_lo[1]);
     }

@@ -342,4 +342,152 @@ AW_FN void aw_naff_subtract(AW_GLOBAL real* re, AW_GLOBAL real* im, aw_u64 strid
   }
 }
 
+/* ------------------------------------------------------------------ lanes
+ * The kernels analyse AW_LANES trajectories at once (one with AW_LANES = 1):
+ * lane j's samples at re[k stride + j] (consecutive trajectories, so a
+ * sample of all lanes is one vector load), already multiplied by the window
+ * chi_p when they were stored (aw_naff_window_at), so a pass has no window
+ * to compute. A pass gives every lane the sums of aw_naff_sums_at with p = 0
+ * on its samples, bit for bit (the same operations in the same order; the
+ * portable lane sin/cos gives aw_sincos2pi_1's bits); aw_naff_refine_lanes
+ * then takes every lane through aw_naff_refine's steps, the lanes that have
+ * stopped carried along until all have: each lane's frequency is the one
+ * aw_naff_refine gives for it (tests/frequencies: "lanes"). */
+
+/* chi_p at sample k of n (aw_naff_sums_at's window, exact at every sample). */
+AW_FN real aw_naff_window_at(int k, int n, int p) {
+  real s, c;
+  aw_sincos2pi_1(((real)k - AW_R(0.5) * (real)(n - 1)) / (real)(n - 1), &s, &c);
+  return aw_naff_window(c, p);
+}
+
+typedef struct {
+  lreal s0r, s0i, s1r, s1i, s2r, s2i;
+} aw_naff_lsums;
+
+/* One pass for every lane at its own sigma; the samples prewindowed. */
+AW_FN void aw_naff_lsums_at(AW_GLOBAL const real* re, AW_GLOBAL const real* im, aw_u64 stride, int n, lreal sigma,
+                            aw_naff_lsums* out) {
+  const real centre = AW_R(0.5) * (real)(n - 1);
+  const lreal a = -sigma;
+  lreal dc, ds, ec = AW_LSPLAT(AW_R(1.0)), es = AW_LSPLAT(AW_R(0.0));
+  aw_sincos2pi(a, &ds, &dc);
+  lreal s0r = AW_LSPLAT(AW_R(0.0)), s0i = s0r, s1r = s0r, s1i = s0r, s2r = s0r, s2i = s0r;
+  for (int k = 0; k < n; ++k) {
+    const real m = (real)k - centre;
+    if (k % AW_NAFF_ANCHOR == 0) {
+      aw_sincos2pi(a * m, &es, &ec);
+    } else {
+      const lreal c = AW_FMA(ec, dc, -(es * ds));
+      const lreal sn = AW_FMA(es, dc, ec * ds);
+      ec = c;
+      es = sn;
+    }
+    const lreal zr = AW_LOAD_LANES(re + (aw_u64)k * stride), zi = AW_LOAD_LANES(im + (aw_u64)k * stride);
+    const lreal ar = AW_FMA(zr, ec, -(zi * es));
+    const lreal ai = AW_FMA(zr, es, zi * ec);
+    s0r = s0r + ar;
+    s0i = s0i + ai;
+    s1r = AW_FMA(AW_LSPLAT(m), ar, s1r);
+    s1i = AW_FMA(AW_LSPLAT(m), ai, s1i);
+    const real mm = m * m;
+    s2r = AW_FMA(AW_LSPLAT(mm), ar, s2r);
+    s2i = AW_FMA(AW_LSPLAT(mm), ai, s2i);
+  }
+  out->s0r = s0r;
+  out->s0i = s0i;
+  out->s1r = s1r;
+  out->s1i = s1i;
+  out->s2r = s2r;
+  out->s2i = s2i;
+}
+
+/* aw_naff_refine for every lane whose active[j] is set, from sigma0 (lanes):
+ * freq[j] its frequency (cycles per sample), ok[j] as aw_naff_refine's ok
+ * (freq[j] = sigma0 where 0). Lanes not active are left as they are. */
+AW_FN void aw_naff_refine_lanes(AW_GLOBAL const real* re, AW_GLOBAL const real* im, aw_u64 stride, int n,
+                                lreal sigma0, const int* active, real* freq, int* ok) {
+#ifdef AW_FLOAT
+  const real eps = AW_R(1.1920928955078125e-07);
+#else
+  const real eps = AW_R(2.220446049250313e-16);
+#endif
+  const real half_bin = AW_R(0.5) / (real)n;
+  real x[AW_LANES], start[AW_LANES], lo[AW_LANES], hi[AW_LANES], last_newton[AW_LANES];
+  int running[AW_LANES], done[AW_LANES], have_lo[AW_LANES], have_hi[AW_LANES], newton_before[AW_LANES];
+  AW_STORE_LANES(sigma0, start);
+  int left = 0;
+  for (int j = 0; j < AW_LANES; ++j) {
+    x[j] = start[j];
+    lo[j] = hi[j] = last_newton[j] = AW_R(0.0);
+    running[j] = active[j];
+    done[j] = have_lo[j] = have_hi[j] = newton_before[j] = 0;
+    left += running[j];
+  }
+  for (int it = 0; it < AW_NAFF_MAX_ITER && left > 0; ++it) {
+    aw_naff_lsums ls;
+    aw_naff_lsums_at(re, im, stride, n, AW_LOAD_LANES(x), &ls);
+    real s0r[AW_LANES], s0i[AW_LANES], s1r[AW_LANES], s1i[AW_LANES], s2r[AW_LANES], s2i[AW_LANES];
+    AW_STORE_LANES(ls.s0r, s0r);
+    AW_STORE_LANES(ls.s0i, s0i);
+    AW_STORE_LANES(ls.s1r, s1r);
+    AW_STORE_LANES(ls.s1i, s1i);
+    AW_STORE_LANES(ls.s2r, s2r);
+    AW_STORE_LANES(ls.s2i, s2i);
+    for (int j = 0; j < AW_LANES; ++j) {
+      if (!running[j]) continue;
+      /* one step of aw_naff_refine's loop */
+      running[j] = 0;
+      const aw_naff_sums s = {s0r[j], s0i[j], s1r[j], s1i[j], s2r[j], s2i[j], AW_R(1.0)};
+      const real g = aw_naff_slope(&s), c = aw_naff_curvature(&s);
+      if (!(g == g && c == c)) continue;
+      if (g == AW_R(0.0) && c < AW_R(0.0)) {
+        done[j] = 1;
+        continue;
+      }
+      if (g > AW_R(0.0)) {
+        lo[j] = x[j];
+        have_lo[j] = 1;
+      } else {
+        hi[j] = x[j];
+        have_hi[j] = 1;
+      }
+      real step = (c < AW_R(0.0)) ? -g / (AW_NAFF_TWO_PI * c) : AW_R(0.0);
+      int newton = c < AW_R(0.0) && AW_FABS(step) <= half_bin;
+      if (!newton) step = (g > AW_R(0.0)) ? half_bin : -half_bin;
+      if (newton && AW_FABS(step) <= eps * (AW_FABS(x[j]) + half_bin)) {
+        x[j] = x[j] + step;
+        done[j] = 1;
+        continue;
+      }
+      real next = x[j] + step;
+      if (have_lo[j] && have_hi[j] && !(next > lo[j] && next < hi[j])) {
+        next = AW_R(0.5) * (lo[j] + hi[j]);
+        newton = 0;
+      }
+      const real size = AW_FABS(next - x[j]);
+      if (size <= eps * (AW_FABS(x[j]) + half_bin)) {
+        x[j] = next;
+        done[j] = 1;
+        continue;
+      }
+      if (newton && newton_before[j] && size > AW_R(0.5) * last_newton[j]) {
+        done[j] = 1;
+        continue;
+      }
+      newton_before[j] = newton;
+      if (newton) last_newton[j] = size;
+      x[j] = next;
+      running[j] = 1;
+    }
+    left = 0;
+    for (int j = 0; j < AW_LANES; ++j) left += running[j];
+  }
+  for (int j = 0; j < AW_LANES; ++j) {
+    if (!active[j]) continue;
+    ok[j] = done[j];
+    freq[j] = done[j] ? x[j] : start[j];
+  }
+}
+
 #endif /* AW_NAFF_H */

@@ -72,6 +72,7 @@ typedef struct {
   real grid_position[3]; /* the fixed position of grid initial conditions, turns */
   real grid_lo[2], grid_width[2]; /* plane: momentum ranges; lonlat: lon, lat ranges in turns */
   real grid_fixed;      /* plane: the third momentum */
+  real frequency_every; /* T between two frequency samples */
 } aw_rparams;
 
 /* --------------------------------------------------- integer parameters */
@@ -79,6 +80,7 @@ typedef struct {
   aw_i64 seed;              /* Philox key */
   aw_i64 steps_per_segment; /* steps between two samples */
   aw_i64 segments;          /* samples per averaging window */
+  aw_i64 energy_stride;     /* segments between energy samples (1: every segment) */
   aw_i64 windows;           /* averaging windows per trajectory */
   aw_i64 nside;             /* HEALPix resolution of the velocity map */
   aw_i64 max_attempts;      /* rejection-sampling bound for initial states */
@@ -90,9 +92,20 @@ typedef struct {
   aw_i64 grid_kind;         /* AW_GRID_* */
   aw_i64 grid_n[2];         /* healpix: nside, 0; lonlat: n_lon, n_lat; plane: n1, n2 */
   aw_i64 grid_axes[3];      /* plane: the two gridded momenta, then the fixed one */
+  /* frequency analysis (effects/aw_fx_frequencies.h) and action samples (effects/aw_fx_diffusion.h) */
+  aw_i64 frequency_stride;  /* segments between frequency samples */
+  aw_i64 frequency_samples; /* n: samples per window (two windows) */
+  aw_i64 frequency_order;   /* p of Laskar's window chi_p */
+  aw_i64 diffusion_stride;  /* segments between action samples */
+  aw_i64 diffusion_samples; /* K: action samples after t = 0 */
+  /* per-trajectory work memory in the series buffer (AW_BUFFERS): series_reals
+   * reals per trajectory, element e of trajectory rec at series[e * series_stride + rec]
+   * (series_stride: the trajectories a launch holds; the backend sets it) */
+  aw_i64 series_reals, series_stride;
   /* the records (aw_params.h): columns per trajectory, and where each slot's columns start */
   aw_i64 rec_reals, rec_ints;
   aw_i64 rec_col_r[AW_OUT_SLOTS], rec_col_i[AW_OUT_SLOTS];
+  aw_i64 rec_width_r[AW_OUT_SLOTS], rec_width_i[AW_OUT_SLOTS];
 } aw_iparams;
 
 #endif /* AW_PARAM_BLOCKS_H */

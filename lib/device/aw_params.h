@@ -33,7 +33,11 @@
  * from states given in their records (ensemble.initial = "file") and stop
  * them at a time slice, leaving in their records all it needs to go on */
 #define AW_F_CARRY 0x4000u
-#define AW_F_ALL 0x7fffu
+/* frequency analysis (NAFF) over two windows, and action samples for
+ * diffusion (docs/frequencies.md) */
+#define AW_F_FREQUENCIES 0x8000u
+#define AW_F_DIFFUSION 0x10000u
+#define AW_F_ALL 0x1ffffu
 
 /* ------------------------------------------------ initial distributions
  * X is uniform on the accessible part of the torus in every case. */
@@ -83,6 +87,9 @@
 #define AW_OUT_FINAL_STATE 1   /* AW_STATE_REALS reals, AW_STATE_INTS integers */
 #define AW_OUT_INDICATORS 2    /* AW_IND_REALS reals */
 #define AW_OUT_CARRY 3         /* AW_CARRY_REALS reals, AW_CARRY_INTS integers: in and out */
+#define AW_OUT_FREQUENCIES 4   /* AW_FREQ_REALS reals (effects/aw_fx_frequencies.h) */
+#define AW_OUT_ACTIONS 5       /* 3 (K + 1) reals, 1 integer (effects/aw_fx_diffusion.h) */
+#define AW_FREQ_REALS 7
 #define AW_OUT_SLOTS 8
 
 /* A state: 6 reals (u_x, u_y, u_z in turns, wrapped; p_x, p_y, p_z) and 4
@@ -130,6 +137,9 @@
  *   rec_r, rec_i per trajectory of the chunk, ip->rec_reals reals and
  *                ip->rec_ints integers (the records)
  *   group_stats  per work-group, AW_GROUP_STATS reals
+ *   series       per trajectory of the chunk, ip->series_reals reals of work
+ *                memory (the frequency samples), coalesced: element e of
+ *                trajectory rec at series[e * ip->series_stride + rec]
  * X(NAME, address space, element type, parameter name) */
 #define AW_BUFFERS(X)                      \
   X(RPARAMS, AW_CONSTANT, aw_rparams, rp)  \
@@ -138,7 +148,8 @@
   X(COUNTERS, AW_GLOBAL, aw_u32, counters) \
   X(RECORDS_R, AW_GLOBAL, real, rec_r)     \
   X(RECORDS_I, AW_GLOBAL, aw_i64, rec_i)   \
-  X(GROUP_STATS, AW_GLOBAL, real, group_stats)
+  X(GROUP_STATS, AW_GLOBAL, real, group_stats) \
+  X(SERIES, AW_GLOBAL, real, series)
 #define AW_BUF_ENUM(NAME, space, type, name) AW_BUF_##NAME,
 enum { AW_BUFFERS(AW_BUF_ENUM) AW_BUF_COUNT };
 #undef AW_BUF_ENUM

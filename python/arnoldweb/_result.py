@@ -207,6 +207,14 @@ class Result:
                 return json.load(f)
         return self._cached("summary", lambda: json.loads(self._record.summary_json(self._part)))
 
+    @property
+    def analyses(self) -> dict:
+        """What was computed from the records once the run ended, as summary.json holds it
+        under "analyses" (docs/frequencies.md): ``result.analyses["diffusion"]`` for
+        observe.diffusion, with ``["along_fit"]["D"]``, its bootstrap ``["D_error"]`` and the
+        moments at every sample time (``["moments"]["along_variance"]``). {} without."""
+        return self.summary.get("analyses", {})
+
     # ---------------------------------------------------------------- panels
     @property
     def name(self) -> str:

@@ -143,6 +143,15 @@ std::vector<Variant> variants() {
                  s.grid_resolution = {7, 3};
                  s.fli = s.megno = true;
                }});
+  // frequency analysis (the lane NAFF at the windows' ends) and the actions' samples
+  v.push_back({"frequencies and diffusion", [](Scene& s) {
+                 s.duration = s.average = 0.64;
+                 s.frequencies = true;
+                 s.frequency_samples = 16;
+                 s.frequency_every = 0.02;
+                 s.diffusion = true;
+                 s.diffusion_every = 0.04;
+               }});
   v.push_back({"native math", [](Scene& s) { s.math = MathMode::Native; }, nullptr, false});
   return v;
 }
@@ -191,6 +200,8 @@ void run_variants(const std::function<bool(const Plan&)>& keep) {
         CHECK(same_bits(r.energy.max, ref.energy.max));
         CHECK(r.energy.log_hist == ref.energy.log_hist);
         CHECK(awtest::first_difference(r.reals("indicators"), ref.reals("indicators")) == -1);
+        CHECK(awtest::first_difference(r.reals("frequencies"), ref.reals("frequencies")) == -1);
+        CHECK(awtest::first_difference(r.reals("actions"), ref.reals("actions")) == -1);
         if (plan.kernel.features & AW_F_TEST_INJECT) CHECK(r.flagged_nonfinite == 1);
       }
     }

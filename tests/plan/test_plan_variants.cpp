@@ -79,10 +79,12 @@ TEST_SUITE("plan") {
       if (!(all.kernel.features & row.feature)) continue;
       CHECK(ip.rec_col_r[row.slot] == reals);
       CHECK(ip.rec_col_i[row.slot] == ints);
-      reals += row.reals;
-      ints += row.ints;
+      CHECK(ip.rec_width_r[row.slot] == row.reals(ip));
+      CHECK(ip.rec_width_i[row.slot] == row.ints(ip));
+      reals += row.reals(ip);
+      ints += row.ints(ip);
       for (const detail::RecordDataset& d : row.datasets)  // every dataset within its row's columns
-        CHECK(d.first + d.count <= (d.integers ? row.ints : row.reals));
+        CHECK(d.first + (d.count < 0 ? 0 : d.count) <= (d.integers ? row.ints(ip) : row.reals(ip)));
     }
     CHECK(ip.rec_reals == reals);
     CHECK(ip.rec_ints == ints);

@@ -213,3 +213,28 @@ def test_compare_maps_float_against_double(small_scene):
     assert different["p_value"] < 1e-6, different
     with pytest.raises(ValueError, match="different sizes"):
         aw.compare_maps(double.map, double.map[:-1])
+
+
+def test_frequencies_and_diffusion_from_python(repo, tmp_path):
+    """observe.frequencies and observe.diffusion: the records as their files hold them, the
+    diffusion analysis as summary.json holds it, the same from a saved run (docs/frequencies.md)."""
+    s = aw.Scene.from_file(repo / "scenes" / "fgl_frequency_map.toml")
+    s.set("ensemble.grid.resolution", [6, 4]).set("observe.fli", False).set("run.device", "cpu")
+    s.set("observe.diffusion", {"every": 10.24, "along": [1, 1, 0], "across": [1, -1, 0], "fit_from": 40.96})
+    r = aw.run(s, out=tmp_path / "fm")
+    f = r.outputs["frequencies"]
+    assert f["nu_first"].shape == (4, 6, 3) and f["diffusion_index"].shape == (4, 6)
+    # at eps = 0.01 the frequencies are the actions to ~1e-2, phi3 turns at 1 per T
+    assert np.allclose(f["nu_first"][..., 0], r.outputs["frequencies"]["nu_second"][..., 0], atol=0.05)
+    assert np.allclose(f["nu_first"][..., 2], 1.0, atol=1e-6)
+    a = r.outputs["actions"]
+    assert a["momentum"].shape == (24, 17, 3)  # 16 sample times after t = 0
+    d = r.analyses["diffusion"]
+    assert d["trajectories"] == 24 and len(d["moments"]["t"]) == 17
+    assert np.isfinite(d["along_fit"]["D"])
+    for name in ("frequencies.h5", "frequency_map.png", "diffusion_index.png", "diffusion.h5", "diffusion.csv",
+                 "diffusion.png"):
+        assert (tmp_path / "fm" / name).is_file(), name
+    back = aw.load(tmp_path / "fm")
+    assert back.analyses == json.loads(json.dumps(r.analyses))
+    assert back.digests["frequencies"] == r.digests["frequencies"]

@@ -35,54 +35,72 @@ std::vector<std::string> checkpoints_beside(const std::string& out) {
   return found;
 }
 
+// few trajectories for long: each launch advances every trajectory by one slice, and a
+// checkpoint between slices holds their whole state (docs/cluster.md, "Long trajectories")
+const std::string kSlicedScene =
+    "[model]\nenergy = 15.0\n[ensemble]\ntrajectories = 2048\nchunk = 1024\n[integrator]\nstep = 0.02\n"
+    "[run]\naverage = 1.0\nduration = 200.0\nslice = 5.0\ncheckpoint_every = 0.1\n"
+    "[observe]\nvelocity_map = { nside = 8 }\nenergy_error = { every = 0.5 }\nfinal_states = true\n"
+    "[output]\nimages = false\n";
+
+// Kills `run` with SIGKILL at random moments (once after its first checkpoint), resumes, and
+// checks the digests of an uninterrupted run.
+void kill9_then_resume(const std::string& scene_text, const std::string& tag) {
+  const std::string root = awtest::temp_dir(tag);
+  const std::string scene = root + "/scene.toml";
+  std::ofstream(scene) << scene_text;
+  const auto t0 = std::chrono::steady_clock::now();
+  REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", root + "/plain"}) == 0);
+  const double plain_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  std::mt19937 rng(static_cast<unsigned>(::getpid()));
+  int resumed = 0;
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    CAPTURE(attempt);
+    const std::string out = root + "/killed-" + std::to_string(attempt);
+    awtest::StartedCli cli = awtest::start_cli({"run", scene, "--device", "cpu", "--out", out});
+    if (attempt == 0) {
+      // once its first checkpoint exists (so that at least one attempt resumes, however
+      // fast the machine: on 16 cores three random moments all missed the checkpoints)
+      const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+      // (or the run finished first: then there is nothing to resume in this attempt)
+      while (arnoldweb::find_checkpoints(out).empty() && !fs::exists(out + "/summary.json") &&
+             std::chrono::steady_clock::now() < until)
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    } else {
+      // at a random moment between 30% and 90% of an uninterrupted run's time
+      const double at = plain_ms * (0.3 + 0.6 * std::uniform_real_distribution<double>(0, 1)(rng));
+      std::this_thread::sleep_for(std::chrono::milliseconds(static_cast<long>(at)));
+    }
+    ::kill(cli.pid, SIGKILL);
+    cli.finish();
+    // killed before its first checkpoint, or after it finished: nothing to resume
+    std::string text;
+    if (!fs::exists(out + "/summary.json")) {
+      const int rc = awtest::run_cli({"resume", out, "--quiet"}, &text);
+      CAPTURE(text);
+      if (rc == 0) ++resumed;
+      else REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", out}) == 0);
+    }
+    awtest::check_same_digests(root + "/plain", out);
+    CHECK(checkpoints_beside(out).empty());
+    // nothing but the listed outputs is left in the directory (no checkpoint temporaries)
+    const auto j = awtest::summary_of(out);
+    std::size_t files = 0;
+    for (const auto& e : fs::recursive_directory_iterator(out)) files += e.is_regular_file();
+    CHECK(files == j["files"].size() + 1);
+  }
+  CHECK(resumed >= 1);
+}
+
 }  // namespace
 
 TEST_SUITE("checkpoint") {
   TEST_CASE("kill -9 at random moments, then resume: the digests of an uninterrupted run") {
-    const std::string root = awtest::temp_dir("kill9");
-    const std::string scene = root + "/scene.toml";
-    std::ofstream(scene) << kScene;
-    const auto t0 = std::chrono::steady_clock::now();
-    REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", root + "/plain"}) == 0);
-    const double plain_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    std::mt19937 rng(static_cast<unsigned>(::getpid()));
-    int resumed = 0;
-    for (int attempt = 0; attempt < 3; ++attempt) {
-      CAPTURE(attempt);
-      const std::string out = root + "/killed-" + std::to_string(attempt);
-      awtest::StartedCli cli = awtest::start_cli({"run", scene, "--device", "cpu", "--out", out});
-      if (attempt == 0) {
-        // once its first checkpoint exists (so that at least one attempt resumes, however
-        // fast the machine: on 16 cores three random moments all missed the checkpoints)
-        const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-        // (or the run finished first: then there is nothing to resume in this attempt)
-        while (arnoldweb::find_checkpoints(out).empty() && !fs::exists(out + "/summary.json") &&
-               std::chrono::steady_clock::now() < until)
-          std::this_thread::sleep_for(std::chrono::milliseconds(2));
-      } else {
-        // at a random moment between 30% and 90% of an uninterrupted run's time
-        const double at = plain_ms * (0.3 + 0.6 * std::uniform_real_distribution<double>(0, 1)(rng));
-        std::this_thread::sleep_for(std::chrono::milliseconds(static_cast<long>(at)));
-      }
-      ::kill(cli.pid, SIGKILL);
-      cli.finish();
-      // killed before its first checkpoint, or after it finished: nothing to resume
-      std::string text;
-      if (!fs::exists(out + "/summary.json")) {
-        const int rc = awtest::run_cli({"resume", out, "--quiet"}, &text);
-        CAPTURE(text);
-        if (rc == 0) ++resumed;
-        else REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", out}) == 0);
-      }
-      awtest::check_same_digests(root + "/plain", out);
-      CHECK(checkpoints_beside(out).empty());
-      // nothing but the listed outputs is left in the directory (no checkpoint temporaries)
-      const auto j = awtest::summary_of(out);
-      std::size_t files = 0;
-      for (const auto& e : fs::recursive_directory_iterator(out)) files += e.is_regular_file();
-      CHECK(files == j["files"].size() + 1);
-    }
-    CHECK(resumed >= 1);
+    kill9_then_resume(kScene, "kill9");
+  }
+
+  TEST_CASE("a sliced run (run.slice) killed with kill -9 at random moments resumes to the uninterrupted digests") {
+    kill9_then_resume(kSlicedScene, "kill9-sliced");
   }
 
   TEST_CASE("SIGTERM writes a checkpoint; resume on another device gives the same digests; refusals") {

@@ -169,6 +169,15 @@ const char* kFullSceneFixed =
     "width = 8.5\n"
     "[observe.frames]\n"
     "times = [0, 100, 1e3, 1e4]\n"
+    "[observe.frequencies]\n"
+    "samples = 1024\n"
+    "every = 0.05\n"
+    "window = 2\n"
+    "[observe.diffusion]\n"
+    "every = 20.0\n"
+    "along = [1, 2, 0]\n"
+    "across = [2, -1, 0]\n"
+    "fit_from = 100\n"
     "[ensemble.grid]\n"
     "kind = \"plane\"\n"
     "nside = 32\n"
@@ -280,6 +289,15 @@ TEST_SUITE("scene") {
     CHECK(s.megno);
     CHECK(s.lyapunov);
     CHECK(s.tangent_initial == std::vector<double>{1, 0, 0, 0, 0, 2});
+    CHECK(s.frequencies);
+    CHECK(s.frequency_samples == 1024);
+    CHECK(s.frequency_every == 0.05);
+    CHECK(s.frequency_window == 2);
+    CHECK(s.diffusion);
+    CHECK(s.diffusion_every == 20.0);
+    CHECK(s.diffusion_along == std::array<double, 3>{1, 2, 0});
+    CHECK(s.diffusion_across == std::array<double, 3>{2, -1, 0});
+    CHECK(s.diffusion_fit_from == 100);
     CHECK(s.grid_kind == "plane");
     CHECK(s.grid_nside == 32);
     CHECK(s.grid_resolution == std::array<double, 2>{128, 256});

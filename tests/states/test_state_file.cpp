@@ -147,7 +147,9 @@ TEST_SUITE("states") {
     CHECK(awtest::first_difference(s.winding, r.w) == -1);
     CHECK(awtest::first_difference(s.momentum, r.p) == -1);
     CHECK(s.status == std::vector<std::int64_t>(s.count, 0));
-    CHECK_FALSE(s.has_time);
+    // the run's /final records when its states were taken: the end of the run
+    CHECK(s.has_time);
+    CHECK(s.time == r.plan.scene.duration);
     check_states(s, r.plan.scene);
     REQUIRE(s.energy.size() == s.count);
     // each state's energy is its own: E to the run's energy error

@@ -3,7 +3,8 @@
  * compiled with, in a fixed order:
  *   aw_fx_begin         after the initial state: status, test_inject, initial_states, E(0)
  *   aw_fx_window_begin  at the start of every averaging window
- *   aw_fx_sample        after every segment (the energy sample interval)
+ *   aw_fx_sample        after every segment (the finest sample interval): energy,
+ *                       confinement, frequency and action samples, each at its stride
  *   aw_fx_window_end    at the end of a window: flags, then the binning effects
  *   aw_fx_finish        after the run: counters, energy statistics, final_states
  * Adding an effect: its bit in aw_params.h, its header in effects/, its state
@@ -14,7 +15,9 @@
 
 #include "effects/aw_fx_binning.h"
 #include "effects/aw_fx_common.h"
+#include "effects/aw_fx_diffusion.h"
 #include "effects/aw_fx_energy.h"
+#include "effects/aw_fx_frequencies.h"
 #include "effects/aw_fx_indicators.h"
 #include "effects/aw_fx_states.h"
 #include "effects/aw_fx_testing.h"
@@ -26,6 +29,7 @@ typedef struct {
   lreal over;           /* max_energy_error: 1 where |dE| exceeded the limit in this window */
   lreal inside;         /* confine: 0 once a lane has left the region */
   aw_tangent tangent;   /* indicators: the tangent vector and its observers */
+  aw_freq freq;         /* frequencies: the window in progress, the first window's result */
 } aw_fx;
 
 AW_FN void aw_fx_begin(aw_config cfg, aw_fx* fx, aw_lstate* s, lreal accepted, aw_lanes l,
@@ -44,6 +48,8 @@ AW_FN void aw_fx_begin(aw_config cfg, aw_fx* fx, aw_lstate* s, lreal accepted, a
   fx->inside = AW_LSPLAT(AW_R(1.0));
   if (AW_HAS(AW_F_ENERGY)) fx->e0 = aw_energy(s, rp);
   aw_tangent_begin(&fx->tangent, rp); /* a few stores; every field defined for the run-time bits of the cpu backend */
+  aw_freq_begin(&fx->freq);
+  if (AW_HAS(AW_F_DIFFUSION)) aw_actions_store(s, 0, l, ip, out);
 }
 
 /* The force at the initial state (and, with the indicators, the Hessian). */
@@ -65,9 +71,21 @@ AW_FN void aw_fx_segment(aw_config cfg, aw_fx* fx, aw_lstate* s, aw_i64 nsteps, 
 
 AW_FN void aw_fx_window_begin(aw_config cfg, aw_fx* fx) { fx->over = AW_LSPLAT(AW_R(0.0)); }
 
-AW_FN void aw_fx_sample(aw_config cfg, aw_fx* fx, const aw_lstate* s, AW_CONSTANT aw_rparams* rp) {
-  if (AW_HAS(AW_F_ENERGY)) aw_energy_sample(s, rp, fx->e0, &fx->emax, &fx->over, AW_HAS(AW_F_ENERGY_LIMIT));
+/* After segment k (0-based, over the whole schedule). */
+AW_FN void aw_fx_sample(aw_config cfg, aw_fx* fx, const aw_lstate* s, aw_i64 k, aw_lanes l, AW_CONSTANT aw_rparams* rp,
+                        AW_CONSTANT aw_iparams* ip, aw_outputs out) {
+  if (AW_HAS(AW_F_ENERGY) && (k + 1) % ip->energy_stride == 0)
+    aw_energy_sample(s, rp, fx->e0, &fx->emax, &fx->over, AW_HAS(AW_F_ENERGY_LIMIT));
   if (AW_HAS(AW_F_CONFINE)) fx->inside = fx->inside * aw_in_region(&rp->confine, s->px, s->py, s->pz);
+  aw_i64 r;
+  if (AW_HAS(AW_F_FREQUENCIES)) {
+    const aw_i64 q = aw_divrem(k + 1, ip->frequency_stride, &r) - 1;
+    if (r == 0 && q < 2 * ip->frequency_samples) aw_freq_sample(&fx->freq, s, fx->status, q, l, rp, ip, out, aw_nan_real());
+  }
+  if (AW_HAS(AW_F_DIFFUSION)) {
+    const aw_i64 q = aw_divrem(k + 1, ip->diffusion_stride, &r);
+    if (r == 0 && q <= ip->diffusion_samples) aw_actions_store(s, q, l, ip, out);
+  }
 }
 
 /* The end of window w: (dx, dy, dz) the displacement over it in turns, sane
@@ -125,6 +143,7 @@ AW_FN void aw_fx_finish(aw_config cfg, aw_fx* fx, const aw_lstate* s, aw_lanes l
     if (AW_HAS(AW_F_TANGENT))
       aw_store_indicators(cfg, aw_record_r(out, ip, AW_OUT_INDICATORS, rec), &fx->tangent, j,
                           st == AW_STATUS_OK || st == AW_STATUS_LEFT_REGION, rp);
+    if (AW_HAS(AW_F_DIFFUSION)) aw_record_i(out, ip, AW_OUT_ACTIONS, rec)[0] = st;
   }
 }
 

@@ -25,6 +25,7 @@ typedef struct {
   AW_GLOBAL aw_u32* counters;  /* AW_C_COUNT counters */
   AW_GLOBAL real* rec_r;       /* ip->rec_reals reals per trajectory of the chunk */
   AW_GLOBAL aw_i64* rec_i;     /* ip->rec_ints integers per trajectory of the chunk */
+  AW_GLOBAL real* series;      /* the sampled time series, ip->series_reals per trajectory (aw_params.h) */
 } aw_outputs;
 
 /* The columns of output `slot` in the records of trajectory `rec` (relative

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,11 @@ struct Result {
   // Its reals and integers (empty when the run has none).
   const std::vector<double>& reals(const std::string& name) const;
   const std::vector<std::int64_t>& ints(const std::string& name) const;
+
+  // What was computed from the records once the run ended, as JSON by name
+  // ("diffusion": the moments and the diffusion coefficients of
+  // observe.diffusion); summary.json holds them under "analyses".
+  std::map<std::string, std::string> analyses;
 
   double wall_seconds = 0;
   double trajectory_steps = 0;  // completed * steps per trajectory

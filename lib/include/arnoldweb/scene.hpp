@@ -128,6 +128,20 @@ struct Scene {
   double grid_fixed = 0.0;                          // ensemble.grid.fixed (plane: the third momentum)
   std::vector<double> grid_position = {0.0, 0.0, 0.0};  // ensemble.grid.position, radians
 
+  // observe.frequencies: the leading frequency of every angle over two windows
+  // of `samples` samples `every` T apart, Laskar's window of order p (docs/frequencies.md)
+  bool frequencies = false;
+  int frequency_samples = 512;
+  double frequency_every = 0.1;
+  int frequency_window = 1;
+  // observe.diffusion: the actions of every trajectory every `every` T, their
+  // spreading along and across a resonance (docs/frequencies.md)
+  bool diffusion = false;
+  double diffusion_every = 10.0;
+  std::array<double, 3> diffusion_along = {1, 1, 0};
+  std::array<double, 3> diffusion_across = {1, -1, 0};
+  double diffusion_fit_from = 0;
+
   // [output]
   std::string output_dir = "out";
   bool images = true;

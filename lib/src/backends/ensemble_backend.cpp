@@ -99,8 +99,11 @@ class EnsembleBackend final : public Backend {
     const std::size_t hist = std::max<std::uint64_t>(hist_size_, 1);
     const std::size_t rec_r = max_chunk_ * rec_reals_ * rs;
     const std::size_t rec_i = max_chunk_ * rec_ints_ * 8;
+    // the series hold whole groups of lanes (the kernels store and load every lane of a group)
+    const std::size_t series_stride = (max_chunk_ + 63) / 64 * 64;
+    const std::size_t series = series_stride * static_cast<std::size_t>(kp.ints.series_reals) * rs;
     const double need = static_cast<double>(reals.size() + sizeof(IntParams) + hist * 12 + AW_C_COUNT * 4 +
-                                            AW_GROUP_STATS * groups * rs + rec_r + rec_i);
+                                            AW_GROUP_STATS * groups * rs + rec_r + rec_i + series);
     const std::uint64_t free = dev_->free_memory();
     if (free && need > static_cast<double>(free))
       throw DeviceError(info().id, "", 0,
@@ -110,8 +113,10 @@ class EnsembleBackend final : public Backend {
                             "observe.velocity_map.nside smaller (map)");
     b_[AW_BUF_RPARAMS] = make(reals.size(), "the real parameters");
     dev_->upload(*b_[AW_BUF_RPARAMS], reals.data(), reals.size());
+    IntParams ints = kp.ints;
+    ints.series_stride = static_cast<std::int64_t>(series_stride);
     b_[AW_BUF_IPARAMS] = make(sizeof(IntParams), "the integer parameters");
-    dev_->upload(*b_[AW_BUF_IPARAMS], &kp.ints, sizeof(IntParams));
+    dev_->upload(*b_[AW_BUF_IPARAMS], &ints, sizeof(IntParams));
     b_[AW_BUF_HIST] = make(hist * 4, "the velocity map (32-bit chunk counts)");
     map64_ = make(hist * 8, "the velocity map (64-bit totals)");
     dev_->zero(*b_[AW_BUF_HIST]);
@@ -120,6 +125,10 @@ class EnsembleBackend final : public Backend {
     b_[AW_BUF_GROUP_STATS] = make(AW_GROUP_STATS * groups * rs, "the energy statistics");
     if (rec_r) b_[AW_BUF_RECORDS_R] = make(rec_r, "per-trajectory records (ensemble.chunk per launch)");
     if (rec_i) b_[AW_BUF_RECORDS_I] = make(rec_i, "per-trajectory records (ensemble.chunk per launch)");
+    if (series) {
+      b_[AW_BUF_SERIES] = make(series, "the sampled series of the frequency analysis (ensemble.chunk per launch)");
+      dev_->zero(*b_[AW_BUF_SERIES]);  // lanes past a chunk's end are read, never used: defined all the same
+    }
     dev_->finish("preparing buffers");
   }
 

@@ -9,6 +9,7 @@
 #include "arnoldweb/run.hpp"
 #include "arnoldweb/output.hpp"
 #include "aw_params.h"
+#include "output/analysis_files.hpp"
 #include "output/indicator_pictures.hpp"
 #include "output/output_dir.hpp"
 #include "output/pictures.hpp"
@@ -43,9 +44,14 @@ void write_run_files(const Plan& plan, const Result& result, const fs::path& dir
   if (!result.frames.empty() && detail::initial_centre(plan.scene, &lon, &lat))
     file("frames_spread.csv",
          [&](const std::string& p) { write_text_file(p, frames_spread_csv(plan, result, lon, lat)); });
+  if (const std::string csv = detail::diffusion_csv(result); !csv.empty())
+    file("diffusion.csv", [&](const std::string& p) { write_text_file(p, csv); });
   if (plan.scene.images) detail::write_pictures(plan, result, dir.string(), names);
 #ifdef ARNOLDWEB_HAVE_CAIRO
-  if (plan.scene.images) detail::write_indicator_pictures(plan, result, dir.string(), names);
+  if (plan.scene.images) {
+    detail::write_indicator_pictures(plan, result, dir.string(), names);
+    detail::write_analysis_pictures(plan, result, dir.string(), names);
+  }
 #endif
 }
 
@@ -62,6 +68,7 @@ double part_bytes(const Plan& p) {
   const detail::IntParams& ip = detail::params(p).ints;
   b += n * static_cast<double>(ip.rec_reals + ip.rec_ints) * 8 * 1.5 + 16e3;  // the records' files (and derived datasets)
   if (p.scene.fli || p.scene.megno || p.scene.lyapunov) b += p.scene.images ? 3e6 : 0;
+  if (p.scene.frequencies || p.scene.diffusion) b += (p.scene.images ? 3e6 : 0) + 64e3;  // pictures, diffusion.csv
   if (p.scene.images) b += (p.scene.velocity_map ? 3 : 0) * 1.5e6 + (p.scene.zoom ? 1.5e6 : 0) + p.frames * 1.6e6;
   return b;
 }

@@ -21,12 +21,12 @@ std::vector<std::uint64_t> grid_shape(const Scene& s, std::uint64_t n) {
   return {n2, n1};
 }
 
-// Columns [d.first, d.first + d.count) of every record, as one array.
+// Columns [first, first + count) of every record, as one array.
 template <class T>
-std::vector<T> columns(const std::vector<T>& v, std::size_t per, const RecordDataset& d, std::uint64_t n) {
-  std::vector<T> out(n * static_cast<std::size_t>(d.count));
+std::vector<T> columns(const std::vector<T>& v, std::size_t per, int first, int count, std::uint64_t n) {
+  std::vector<T> out(n * static_cast<std::size_t>(count));
   for (std::uint64_t t = 0; t < n; ++t)
-    for (int k = 0; k < d.count; ++k) out[t * d.count + k] = v[t * per + static_cast<std::size_t>(d.first + k)];
+    for (int k = 0; k < count; ++k) out[t * count + k] = v[t * per + static_cast<std::size_t>(first + k)];
   return out;
 }
 
@@ -38,19 +38,28 @@ OutputDataset dataset(const RecordOutput& row, const Records& rec, const RecordD
   o.meaning = d.meaning;
   o.file = row.file;
   o.group = row.group;
+  const int width = static_cast<int>(d.integers ? rec.ints_per : rec.reals_per);
+  const int count = d.count < 0 ? width - d.first : d.count;
   o.shape = dims;
-  if (d.count > 1) o.shape.push_back(static_cast<std::uint64_t>(d.count));
+  if (d.group > 1) {
+    o.shape.push_back(static_cast<std::uint64_t>(count / d.group));
+    o.shape.push_back(static_cast<std::uint64_t>(d.group));
+  } else if (count > 1) {
+    o.shape.push_back(static_cast<std::uint64_t>(count));
+  }
   const std::uint64_t n = rec.count();
   o.integers = d.integers && !d.unwrapped;
   if (o.integers) {
-    o.ints = columns(rec.ints, rec.ints_per, d, n);
+    o.ints = columns(rec.ints, rec.ints_per, d.first, count, n);
     return o;
   }
-  o.reals = columns(rec.reals, rec.reals_per, d, n);
+  o.reals = columns(rec.reals, rec.reals_per, d.first, count, n);
   if (d.unwrapped)  // 2 pi (winding + turns)
     for (std::uint64_t t = 0; t < n; ++t)
-      for (int k = 0; k < d.count; ++k)
-        o.reals[t * d.count + k] = 2 * M_PI * (static_cast<double>(rec.ints[t * rec.ints_per + k]) + o.reals[t * d.count + k]);
+      for (int k = 0; k < count; ++k)
+        o.reals[t * count + k] = 2 * M_PI * (static_cast<double>(rec.ints[t * rec.ints_per + k]) + o.reals[t * count + k]);
+  if (d.log10)
+    for (double& v : o.reals) v = std::log10(v);
   return o;
 }
 

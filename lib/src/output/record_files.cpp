@@ -70,6 +70,12 @@ void plan_attribute(H5Writer& h, hid_t where, const std::string& name, const Pla
     h.attr(where, "time", plan.start_time());
   else if (name == "time_end")
     h.attr(where, "time", plan.start_time() + plan.scene.duration);
+  else if (name == "frequency_window") {
+    h.attr(where, "samples", static_cast<std::int64_t>(plan.scene.frequency_samples));
+    h.attr(where, "every", plan.scene.frequency_every);
+    h.attr(where, "window_order", static_cast<std::int64_t>(plan.scene.frequency_window));
+  } else if (name == "diffusion_every")
+    h.attr(where, "every", plan.scene.diffusion_every);
   else
     throw OutputError(name, "the output table names an attribute the writer does not know");
 }

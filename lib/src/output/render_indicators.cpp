@@ -25,28 +25,13 @@ std::string fmt(double v) {
   return b;
 }
 
-struct LinearScale {
-  double lo = 0, hi = 1;
-  explicit LinearScale(std::vector<double> v) {
-    v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-    if (v.empty()) return;
-    std::sort(v.begin(), v.end());
-    lo = v[static_cast<std::size_t>(0.01 * static_cast<double>(v.size() - 1))];
-    hi = v[static_cast<std::size_t>(0.99 * static_cast<double>(v.size() - 1))];
-    if (!(hi > lo)) hi = lo + 1;
-  }
-  // colour-map position; NaN: -2 (drawn grey by the caller)
-  double operator()(double x) const {
-    if (!std::isfinite(x)) return -2;
-    return 0.04 + 0.96 * std::clamp((x - lo) / (hi - lo), 0.0, 1.0);
-  }
-};
-
 void grey_background(Canvas& c, double x, double y, double w, double h) {
   cairo_set_source_rgb(c.cr(), 0.35, 0.35, 0.35);
   cairo_rectangle(c.cr(), x, y, w, h);
   cairo_fill(c.cr());
 }
+
+}  // namespace
 
 void linear_bar(Canvas& c, double x, double y, double w, double h, const LinearScale& s, const std::string& label) {
   c.paint(static_cast<int>(x), static_cast<int>(y), static_cast<int>(w), static_cast<int>(h),
@@ -64,6 +49,8 @@ void linear_bar(Canvas& c, double x, double y, double w, double h, const LinearS
   }
   c.text(x + w / 2, y - 6, label, 12, 0.9, 0.9, 0.9, true);
 }
+
+namespace {
 
 std::vector<double> column(const Result& r, int slot) {
   const std::vector<double>& ind = r.reals("indicators");
@@ -164,6 +151,46 @@ const char* momentum_name(double axis) { return axis == 0 ? "p1 (p_x)" : axis ==
 
 }  // namespace
 
+double LinearScale::operator()(double x) const {
+  if (!std::isfinite(x)) return -2;
+  return 0.04 + 0.96 * std::clamp((x - lo) / (hi - lo), 0.0, 1.0);
+}
+
+LinearScale::LinearScale(std::vector<double> v) {
+  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
+  if (v.empty()) return;
+  std::sort(v.begin(), v.end());
+  lo = v[static_cast<std::size_t>(0.01 * static_cast<double>(v.size() - 1))];
+  hi = v[static_cast<std::size_t>(0.99 * static_cast<double>(v.size() - 1))];
+  if (!(hi > lo)) hi = lo + 1;
+}
+
+std::string picture_title(const Plan& plan) {
+  const Scene& s = plan.scene;
+  char title[200];
+  std::snprintf(title, sizeof title, "E = %g,  t = %g T,  %s,  h = %g T", s.energy, s.duration, plan.method.name.c_str(),
+                plan.step);
+  return title;
+}
+
+std::string picture_caption(const Result& r) { return "arnoldweb on " + r.device.id + " (" + r.device.name + ")"; }
+
+void write_grid_picture(const Plan& plan, const Result& r, const std::string& path, const std::vector<double>& v,
+                        const std::string& label) {
+  const Scene& s = plan.scene;
+  const std::string title = label + "   " + picture_title(plan), caption = picture_caption(r);
+  if (s.grid_kind == "healpix") {
+    render_healpix(path, v, s.grid_nside, title, label, caption);
+  } else if (s.grid_kind == "lonlat") {
+    render_plane(path, v, static_cast<int>(s.grid_resolution[0]), static_cast<int>(s.grid_resolution[1]), s.box_lon,
+                 s.box_lat, "longitude of P, degrees", "latitude of P, degrees", title, label, caption);
+  } else {
+    render_plane(path, v, static_cast<int>(s.grid_resolution[0]), static_cast<int>(s.grid_resolution[1]),
+                 s.grid_range1, s.grid_range2, momentum_name(s.grid_axes[0]), momentum_name(s.grid_axes[1]), title,
+                 label, caption);
+  }
+}
+
 void write_indicator_pictures(const Plan& plan, const Result& r, const std::string& dir,
                               std::vector<std::string>& names) {
   const Scene& s = plan.scene;
@@ -176,29 +203,14 @@ void write_indicator_pictures(const Plan& plan, const Result& r, const std::stri
   };
   const Picture pictures[] = {{s.fli, "fli.png", AW_IND_FLI, "FLI = max log|w|"},
                               {s.megno, "megno.png", AW_IND_MEGNO, "mean MEGNO <Y>"}};
-  char title[200];
-  std::snprintf(title, sizeof title, "E = %g,  t = %g T,  %s,  h = %g T", s.energy, s.duration, plan.method.name.c_str(),
-                plan.step);
-  const std::string caption = "arnoldweb on " + r.device.id + " (" + r.device.name + ")";
   for (const Picture& p : pictures) {
     if (!p.asked) continue;
-    const std::vector<double> v = column(r, p.slot);
-    const std::string path = dir + "/" + p.file;
-    if (s.grid_kind == "healpix") {
-      render_healpix(path, v, s.grid_nside, std::string(p.label) + "   " + title, p.label, caption);
-    } else if (s.grid_kind == "lonlat") {
-      render_plane(path, v, static_cast<int>(s.grid_resolution[0]), static_cast<int>(s.grid_resolution[1]), s.box_lon,
-                   s.box_lat, "longitude of P, degrees", "latitude of P, degrees",
-                   std::string(p.label) + "   " + title, p.label, caption);
-    } else {
-      render_plane(path, v, static_cast<int>(s.grid_resolution[0]), static_cast<int>(s.grid_resolution[1]),
-                   s.grid_range1, s.grid_range2, momentum_name(s.grid_axes[0]), momentum_name(s.grid_axes[1]),
-                   std::string(p.label) + "   " + title, p.label, caption);
-    }
+    write_grid_picture(plan, r, dir + "/" + p.file, column(r, p.slot), p.label);
     names.push_back(p.file);
   }
   if (s.fli && s.grid_kind == "healpix" && !r.map.empty() && r.nside > 0) {
-    render_map_and_fli(dir + "/map_and_fli.png", r.map, r.nside, column(r, AW_IND_FLI), s.grid_nside, title, caption);
+    render_map_and_fli(dir + "/map_and_fli.png", r.map, r.nside, column(r, AW_IND_FLI), s.grid_nside,
+                       picture_title(plan), picture_caption(r));
     names.push_back("map_and_fli.png");
   }
 }

@@ -89,6 +89,7 @@ std::string summary_json(const Plan& plan, const Result& r, const std::vector<st
                {"ordering", "RING"},
                {"frames", plan.frames},
                {"zoom_resolution", plan.zoom_resolution}};
+  for (const auto& [name, text] : r.analyses) j["analyses"][name] = json::parse(text);
   j["time"] = {{"start", plan.start_time()}, {"end", plan.start_time() + plan.scene.duration}, {"unit", "T"}};
   j["scene"] = json::parse(plan.scene.to_json());  // every key, from the key table
   j["scene_toml"] = plan.scene.to_toml();

@@ -15,6 +15,7 @@ namespace {
 
 constexpr std::uint64_t kMaxChunkStates = 1u << 20;  // trajectories per launch with state records
 constexpr std::uint64_t kMaxChunk = 1ull << 30;
+constexpr double kMaxSeriesBytes = 2.0 * (1ull << 30);  // the work memory of one launch (frequency samples)
 
 std::string mib(double bytes) {
   char b[32];
@@ -34,6 +35,11 @@ double state_bytes(const Plan& p, double real_size) {
   return static_cast<double>(ip.rec_reals) * real_size + static_cast<double>(ip.rec_ints) * 8;
 }
 
+// Bytes of one trajectory's work memory on the device.
+double series_bytes(const Plan& p, double real_size) {
+  return static_cast<double>(detail::params(p).ints.series_reals) * real_size;
+}
+
 // The key that makes the histograms large.
 std::string histogram_key(const Plan& p) {
   const double zoom = static_cast<double>(p.zoom_resolution) * p.zoom_resolution;
@@ -49,6 +55,8 @@ std::uint64_t largest_chunk(const Plan& plan) {
   std::uint64_t m = has_states(plan) ? kMaxChunkStates : kMaxChunk;
   // 32-bit counts per launch: windows * chunk must stay below 2^32
   m = std::min<std::uint64_t>(m, 4000000000ull / static_cast<std::uint64_t>(std::max<std::int64_t>(plan.windows, 1)));
+  const double series = series_bytes(plan, 8);
+  if (series > 0) m = std::min<std::uint64_t>(m, std::max<std::uint64_t>(1, static_cast<std::uint64_t>(kMaxSeriesBytes / series)));
   if (plan.scene.chunk) m = plan.scene.chunk;
   return std::max<std::uint64_t>(1, std::min(m, plan.scene.trajectories));
 }
@@ -59,7 +67,7 @@ MemoryEstimate estimate_memory(const Plan& plan) {
   const double rs = plan.kernel.precision == Precision::Float ? 4 : 8;
   const double hist = static_cast<double>(std::max<std::uint64_t>(plan.hist_size, 1));
   e.histogram_bytes = hist * 12;  // 32-bit chunk counts and 64-bit totals
-  e.device_bytes = e.histogram_bytes + state_bytes(plan, rs) * static_cast<double>(e.max_chunk) + 1e6;
+  e.device_bytes = e.histogram_bytes + (state_bytes(plan, rs) + series_bytes(plan, rs)) * static_cast<double>(e.max_chunk) + 1e6;
   // in this process: the totals read back, the result's maps and frames, and
   // the state records of every trajectory (kept per chunk, then joined, then
   // written), besides the cpu backend's own buffers when it is the device

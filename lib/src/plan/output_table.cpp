@@ -8,12 +8,12 @@ namespace arnoldweb::detail {
 
 const std::vector<RecordOutput>& record_outputs() {
   static const std::vector<RecordOutput> rows = {
-      {"initial_states", AW_OUT_INITIAL_STATE, AW_F_INITIAL_STATES, AW_STATE_REALS, 0, "states.h5", "initial",
+      {"initial_states", AW_OUT_INITIAL_STATE, AW_F_INITIAL_STATES, fixed(AW_STATE_REALS), fixed(0), "states.h5", "initial",
        false,
        {{"position_turns", false, 0, 3, ""}, {"momentum", false, 3, 3, ""}},
        "the initial state of every trajectory: position in turns (wrapped to [-1/2, 1/2]) and momentum",
        {"time_start"}},
-      {"final_states", AW_OUT_FINAL_STATE, AW_F_FINAL_STATES, AW_STATE_REALS, AW_STATE_INTS, "states.h5", "final",
+      {"final_states", AW_OUT_FINAL_STATE, AW_F_FINAL_STATES, fixed(AW_STATE_REALS), fixed(AW_STATE_INTS), "states.h5", "final",
        false,
        {{"position_turns", false, 0, 3, ""},
         {"winding", true, 0, 3, ""},
@@ -23,7 +23,7 @@ const std::vector<RecordOutput>& record_outputs() {
         {"position", false, 0, 3, "2 pi (winding + position_turns): unwrapped, in radians", 0, true}},
        "the final state of every trajectory: position in turns with its winding counts, momentum, status",
        {"time_end"}},
-      {"indicators", AW_OUT_INDICATORS, AW_F_TANGENT, AW_IND_REALS, 0, "indicators.h5", "", true,
+      {"indicators", AW_OUT_INDICATORS, AW_F_TANGENT, fixed(AW_IND_REALS), fixed(0), "indicators.h5", "", true,
        {{"fli", false, AW_IND_FLI, 1, "max over the run of log|w(t)|, |w(0)| = 1 (natural log); NaN: trajectory flagged",
          AW_F_FLI},
         {"megno", false, AW_IND_MEGNO, 1,
@@ -35,8 +35,26 @@ const std::vector<RecordOutput>& record_outputs() {
          AW_F_LYAPUNOV}},
        "the chaos indicators of every trajectory (FLI, MEGNO, Lyapunov exponents; docs/indicators.md)",
        {"duration", "tangent_initial"}},
+      {"frequencies", AW_OUT_FREQUENCIES, AW_F_FREQUENCIES, fixed(AW_FREQ_REALS), fixed(0), "frequencies.h5", "", true,
+       {{"nu_first", false, 0, 3, "the leading frequency of each angle (x, y, z) over the first window, turns per T; "
+                                  "NaN: trajectory flagged, or no maximum found"},
+        {"nu_second", false, 3, 3, "the same over the second window"},
+        {"diffusion_index", false, 6, 1, "log10 |nu_second - nu_first| (Laskar's diffusion index; -inf: no change)", 0,
+         false, true}},
+       "the leading frequency of every angle over two consecutive windows and the diffusion index "
+       "(observe.frequencies, NAFF; docs/frequencies.md)",
+       {"duration", "frequency_window"}},
+      {"actions", AW_OUT_ACTIONS, AW_F_DIFFUSION,
+       [](const IntParams& ip) { return static_cast<int>(3 * (ip.diffusion_samples + 1)); }, fixed(1), "diffusion.h5", "",
+       false,
+       {{"momentum", false, 0, -1, "the actions (momenta) at t_k = k every, k = 0 .. K: shape (n, K + 1, 3)", 0, false,
+         false, 3},
+        {"status", true, 0, 1, "the trajectory's status at the end (0 ok: a flagged one is left out of the moments)"}},
+       "the actions of every trajectory at every sample time (observe.diffusion; the moments and D: diffusion.csv, "
+       "summary.json)",
+       {"diffusion_every"}},
       // internal (no file): the state between two launches (open runs), in checkpoints only
-      {"carry", AW_OUT_CARRY, AW_F_CARRY, AW_CARRY_REALS, AW_CARRY_INTS, "", "", false, {},
+      {"carry", AW_OUT_CARRY, AW_F_CARRY, fixed(AW_CARRY_REALS), fixed(AW_CARRY_INTS), "", "", false, {},
        "a trajectory's whole state between two time slices, or the state it starts from (ensemble.initial = "
        "\"file\")"},
   };
@@ -69,8 +87,10 @@ void lay_out_records(std::uint32_t features, IntParams& ip) {
   for (const RecordOutput* r : records_written(features)) {
     ip.rec_col_r[r->slot] = ip.rec_reals;
     ip.rec_col_i[r->slot] = ip.rec_ints;
-    ip.rec_reals += r->reals;
-    ip.rec_ints += r->ints;
+    ip.rec_width_r[r->slot] = r->reals(ip);
+    ip.rec_width_i[r->slot] = r->ints(ip);
+    ip.rec_reals += ip.rec_width_r[r->slot];
+    ip.rec_ints += ip.rec_width_i[r->slot];
   }
 }
 

@@ -23,23 +23,32 @@
 
 namespace arnoldweb::detail {
 
+// Columns per trajectory of a row: a number, or one the plan decides (from its
+// integer parameters: e.g. one action vector per sample time).
+using Width = std::function<int(const IntParams& ip)>;
+inline Width fixed(int n) {
+  return [n](const IntParams&) { return n; };
+}
+
 // One HDF5 dataset made of some of a row's columns.
 struct RecordDataset {
   std::string name;           // within the row's group
   bool integers = false;      // columns of the integer record (else of the real record)
-  int first = 0, count = 1;   // its columns: [first, first + count); count 1 gives a 1-d dataset
+  int first = 0, count = 1;   // its columns: [first, first + count); count 1 gives a 1-d dataset; -1: to the row's end
   std::string meaning;        // its "meaning" attribute ("": none)
   std::uint32_t feature = 0;  // written only when the kernel has this bit as well (0: always)
   // 2 pi (winding + turns): real columns [first, first + count) with integer
   // columns [0, count) (an unwrapped position in radians)
   bool unwrapped = false;
+  bool log10 = false;  // the decimal logarithm of the values (0: -inf)
+  int group = 0;       // > 1: the columns grouped by this many (a dataset of shape (n, columns / group, group))
 };
 
 struct RecordOutput {
   std::string name;           // Result::records_of, summary.json "digests", Python
   int slot = 0;               // AW_OUT_* (aw_params.h)
   std::uint32_t feature = 0;  // the kernel writes it when its features have this bit
-  int reals = 0, ints = 0;    // columns per trajectory
+  Width reals, ints;          // columns per trajectory
   std::string file;           // the output file it is written into ...
   std::string group;          // ... under this group ("": the file's root)
   // Its datasets take the grid's shape ([n2][n1]) when the initial states are a
@@ -61,7 +70,8 @@ std::vector<const RecordOutput*> records_written(std::uint32_t features);
 // Those of them that are results (not internal).
 std::vector<const RecordOutput*> records_reported(std::uint32_t features);
 // Lays those rows' columns out in the integer parameters (rec_reals, rec_ints,
-// rec_col_r, rec_col_i): one row after the other, in table order.
+// rec_col_r, rec_col_i, rec_width_r, rec_width_i): one row after the other, in
+// table order. The widths may depend on the other integer parameters: fill them first.
 void lay_out_records(std::uint32_t features, IntParams& ip);
 
 }  // namespace arnoldweb::detail

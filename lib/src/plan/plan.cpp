@@ -14,6 +14,7 @@
 #include "plan/checks.hpp"
 #include "plan/effects.hpp"
 #include "plan/indicators.hpp"
+#include "plan/analysis_plan.hpp"
 #include "plan/model_plan.hpp"
 #include "plan/plan_states.hpp"
 #include "plan/plan_params.hpp"
@@ -113,11 +114,12 @@ void fill_method(const Plan& p, detail::RealParams& rp) {
   if (!m.gradient.empty()) rp.gradient_merged = (m.gradient.back() + m.gradient.front()) * (h * h * h);
 }
 
-// The step schedule's counts.
+// The step schedule's counts (and the strides of the effects that sample).
 void fill_schedule(const Plan& p, detail::IntParams& ip) {
   ip.steps_per_segment = p.steps_per_segment;
   ip.segments = p.segments_per_window;
   ip.windows = p.windows;
+  detail::fill_analysis_ints(p.scene, p, ip);
 }
 
 void fill_reals(const Scene& scene, const Plan& p, detail::RealParams& rp) {
@@ -128,6 +130,7 @@ void fill_reals(const Scene& scene, const Plan& p, detail::RealParams& rp) {
   if (scene.zoom) region_of(scene.zoom_center, scene.zoom_width, rp.zoom);
   if (scene.confine) region_of(scene.confine_center, scene.confine_width, rp.confine);
   detail::fill_indicator_reals(scene, p, rp);
+  detail::fill_analysis_reals(scene, rp);
 }
 
 // The parameters of the initial kind.
@@ -186,6 +189,7 @@ Plan make_plan(const Scene& scene_as_written) {
   else if (scene.initial != "file")  // states from a file: each has its own energy (states.hpp)
     detail::plan_accessible(scene, model, params->reals, p);
   detail::plan_schedule(scene, p);
+  detail::plan_analysis(scene, p);
   plan_kernel(scene, model, p);
   plan_histograms(scene, p);
   fill_reals(scene, p, params->reals);

@@ -3,6 +3,8 @@
 // checked against overflow before it is made.
 #include "plan/schedule.hpp"
 
+#include <string>
+
 #include "aw_params.h"
 #include "plan/checks.hpp"
 
@@ -38,10 +40,9 @@ void plan_slices(const Scene& scene, Plan& p) {
   const std::int64_t per_slice = exact_ratio(scene.slice, segment);
   if (per_slice == 0)
     fail_at(scene, "run.slice",
-            "run.slice = " + fmt(scene.slice) + " T is not a multiple of " + fmt(segment) + " T (" +
-                (scene.energy_error || scene.max_energy_error.has_value() ? "observe.energy_error.every"
-                                                                          : "run.average, the energy not tracked") +
-                "): a slice ends where the energy is sampled");
+            "run.slice = " + fmt(scene.slice) + " T is not a multiple of the sample interval " + fmt(segment) +
+                " T (the shortest of observe.energy_error.every, observe.frequencies.every, "
+                "observe.diffusion.every, or run.average): a slice ends at a sample");
   p.slice_segments = per_slice;
   p.slices = (segments + per_slice - 1) / per_slice;
 }
@@ -61,18 +62,37 @@ void plan_schedule(const Scene& scene, Plan& p) {
     fail_at(scene, "run.duration",
             "run.duration = " + fmt(scene.duration) + " T is not a positive multiple of run.average = " +
                 fmt(scene.average) + " T");
-  if (scene.energy_error || scene.max_energy_error.has_value()) {
-    p.segments_per_window = exact_ratio(scene.average, scene.energy_every);
-    const std::int64_t seg_steps = exact_ratio(scene.energy_every, p.step);
-    if (p.segments_per_window == 0 || seg_steps == 0 || seg_steps * p.segments_per_window != per_window)
-      fail_at(scene, "observe.energy_error.every",
-              "the energy sample interval " + fmt(scene.energy_every) + " T must divide run.average = " +
-                  fmt(scene.average) + " T and be a multiple of integrator.step = " + fmt(p.step) + " T");
-    p.steps_per_segment = seg_steps;
-  } else {
-    p.segments_per_window = 1;
-    p.steps_per_segment = per_window;
+  const bool energy = scene.energy_error || scene.max_energy_error.has_value();
+  // The segment: the finest sample interval asked for (the energy's, the
+  // frequencies', the actions'); every other is a whole number of segments.
+  double unit = energy ? scene.energy_every : scene.average;
+  const char* unit_key = energy ? "observe.energy_error.every" : "run.average";
+  if (scene.frequencies && scene.frequency_every < unit) unit = scene.frequency_every, unit_key = "observe.frequencies.every";
+  if (scene.diffusion && scene.diffusion_every < unit) unit = scene.diffusion_every, unit_key = "observe.diffusion.every";
+  p.segments_per_window = exact_ratio(scene.average, unit);
+  const std::int64_t seg_steps = exact_ratio(unit, p.step);
+  if (p.segments_per_window == 0 || seg_steps == 0 || seg_steps * p.segments_per_window != per_window) {
+    if (std::string(unit_key) == "run.average")
+      fail_at(scene, "run.average", "run.average = " + fmt(scene.average) + " T is not a multiple of integrator.step");
+    fail_at(scene, unit_key,
+            std::string(std::string(unit_key) == "observe.energy_error.every" ? "the energy sample interval "
+                                                                               : "the sample interval ") +
+                fmt(unit) + " T must divide run.average = " + fmt(scene.average) +
+                " T and be a multiple of integrator.step = " + fmt(p.step) + " T");
   }
+  p.steps_per_segment = seg_steps;
+  // how many segments apart each effect samples
+  auto stride = [&](double every, const char* key) -> std::int64_t {
+    const std::int64_t k = exact_ratio(every, unit);
+    if (k == 0)
+      fail_at(scene, key,
+              fmt(every) + " T is not a multiple of the shortest sample interval, " + unit_key + " = " + fmt(unit) +
+                  " T: every sample interval is a multiple of the shortest");
+    return k;
+  };
+  p.energy_stride = energy ? stride(scene.energy_every, "observe.energy_error.every") : 1;
+  p.frequency_stride = scene.frequencies ? stride(scene.frequency_every, "observe.frequencies.every") : 1;
+  p.diffusion_stride = scene.diffusion ? stride(scene.diffusion_every, "observe.diffusion.every") : 1;
   p.steps_per_trajectory = p.windows * per_window;
   plan_slices(scene, p);
   p.trajectory_steps = static_cast<double>(scene.trajectories) * static_cast<double>(p.steps_per_trajectory);

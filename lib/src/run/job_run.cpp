@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "arnoldweb/run.hpp"
+#include "run/analyses.hpp"
 #include "run/job_checkpoints.hpp"
 #include "run/part_run.hpp"
 
@@ -33,6 +34,7 @@ JobResult run_job(const Job& job, Backend& backend, const RunOptions& options, J
       r.device = backend.info();
       r.kernel = "(from a checkpoint)";
       r.trajectory_steps = static_cast<double>(r.completed) * static_cast<double>(plan.steps_per_trajectory);
+      detail::analyse(plan, r);
       jr.results.push_back(std::move(r));
       continue;
     }

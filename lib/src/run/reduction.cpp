@@ -28,12 +28,13 @@ void columns(const std::vector<T>& arena, std::int64_t stride, std::int64_t col,
 }  // namespace
 
 std::vector<Records> empty_records(const Plan& plan) {
+  const IntParams& ip = params(plan).ints;
   std::vector<Records> records;
   for (const RecordOutput* row : records_reported(plan.kernel.features)) {
     Records& out = records.emplace_back();
     out.name = row->name;
-    out.reals_per = static_cast<std::size_t>(row->reals);
-    out.ints_per = static_cast<std::size_t>(row->ints);
+    out.reals_per = static_cast<std::size_t>(ip.rec_width_r[row->slot]);
+    out.ints_per = static_cast<std::size_t>(ip.rec_width_i[row->slot]);
   }
   return records;
 }
@@ -43,8 +44,8 @@ void append_records(const Plan& plan, const std::vector<double>& reals, const st
   const IntParams& ip = params(plan).ints;
   std::size_t k = 0;
   for (const RecordOutput* row : records_reported(plan.kernel.features)) {
-    columns(reals, ip.rec_reals, ip.rec_col_r[row->slot], row->reals, records.at(k).reals);
-    columns(ints, ip.rec_ints, ip.rec_col_i[row->slot], row->ints, records.at(k).ints);
+    columns(reals, ip.rec_reals, ip.rec_col_r[row->slot], static_cast<int>(ip.rec_width_r[row->slot]), records.at(k).reals);
+    columns(ints, ip.rec_ints, ip.rec_col_i[row->slot], static_cast<int>(ip.rec_width_i[row->slot]), records.at(k).ints);
     ++k;
   }
 }

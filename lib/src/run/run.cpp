@@ -4,6 +4,7 @@
 #include "arnoldweb/run.hpp"
 
 #include "run/chunk_loop.hpp"
+#include "run/analyses.hpp"
 #include "run/part_run.hpp"
 #include "aw_params.h"
 #include "plan/checks.hpp"
@@ -24,6 +25,7 @@ Result run_part(const Plan& plan, Backend& backend, const RunOptions& options, R
   r.kernel = backend.kernel_description();
   r.interrupted = queue.stopped();
   r.trajectory_steps = static_cast<double>(r.completed) * static_cast<double>(plan.steps_per_trajectory);
+  if (r.completed == plan.scene.trajectories) analyse(plan, r);
   if (options.progress) options.progress->finish(r.completed, plan.scene.trajectories, r.wall_seconds);
   return r;
 }

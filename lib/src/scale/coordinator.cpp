@@ -8,6 +8,7 @@
 #include "plan/checks.hpp"
 #include "run/chunk_loop.hpp"
 #include "run/job_checkpoints.hpp"
+#include "run/analyses.hpp"
 #include "run/part_run.hpp"
 #include "scale/messages.hpp"
 
@@ -149,6 +150,7 @@ JobResult coordinate_job(const Job& job, Transport& transport, const RunOptions&
     if (k < parts.size() && parts[k]->complete() && k + 1 < parts.size()) {
       r = parts[k]->result();  // done before the checkpoint
       r.kernel = "(from a checkpoint)";
+      analyse(plan, r);
     } else {
       if (!cp && options.stop && options.stop->load()) {
         jr.interrupted = true;
@@ -163,6 +165,7 @@ JobResult coordinate_job(const Job& job, Transport& transport, const RunOptions&
       r = parts[k]->result();
       r.kernel = kernel();
       r.interrupted = stopped;
+      if (!stopped) analyse(plan, r);
       if (o.progress) o.progress->finish(r.completed, plan.scene.trajectories, r.wall_seconds);
     }
     r.device = device;

@@ -563,6 +563,72 @@ void observe_keys(Rows& add) {
       "Frame boundaries, in T.");
 }
 
+// Frequency analysis and diffusion (docs/frequencies.md).
+std::string triple_literal(const std::array<double, 3>& v) {
+  return "[" + toml_double(v[0]) + ", " + toml_double(v[1]) + ", " + toml_double(v[2]) + "]";
+}
+Read direction_into(std::array<double, 3> Scene::*f) {
+  return [f](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+    std::vector<double> v;
+    if (r.reals(key, n, v, 3, [](const std::vector<double>& x) { return x[0] != 0 || x[1] != 0 || x[2] != 0; }))
+      s.*f = {v[0], v[1], v[2]};
+  };
+}
+
+void analysis_keys(Rows& add) {
+  add("observe.frequencies", "table or boolean", "{ samples = n, every = T, window = p }, true or false",
+      "a table { samples = n, every = <T>, window = p }, true (the defaults) or false",
+      [](const Scene& s) {
+        return s.frequencies ? "{ samples = " + std::to_string(s.frequency_samples) + ", every = " +
+                                   toml_double(s.frequency_every) + ", window = " +
+                                   std::to_string(s.frequency_window) + " }"
+                             : boolean(false);
+      },
+      switch_into(&Scene::frequencies, true),
+      "Frequency map analysis (NAFF, docs/frequencies.md): the leading frequency of every angle of every "
+      "trajectory over two consecutive windows of `samples` samples `every` T apart, from t = every on, and "
+      "the diffusion index (log10 of the norm of nu(2) - nu(1)): frequencies.h5, frequency_map.png, diffusion_index.png.",
+      Shape::Composite);
+  add("observe.frequencies.samples", "integer", "16 to 65536", "an integer from 16 to 65536",
+      integer_of(&Scene::frequency_samples),
+      integer_into(&Scene::frequency_samples, [](std::int64_t v) { return v >= 16 && v <= 65536; }),
+      "Samples per window (the two windows take 2 samples every T).");
+  add("observe.frequencies.every", "float", "> 0, a multiple of integrator.step",
+      "a finite float greater than 0 (in units of T)", real_of(&Scene::frequency_every),
+      real_into(&Scene::frequency_every, positive),
+      "Sample interval, in T (a multiple of integrator.step; observe.energy_error.every and run.average are "
+      "multiples of it).");
+  add("observe.frequencies.window", "integer", "0 to 4", "an integer from 0 to 4", integer_of(&Scene::frequency_window),
+      integer_into(&Scene::frequency_window, [](std::int64_t v) { return v >= 0 && v <= 4; }),
+      "Order p of Laskar's window chi_p (1: Hanning, frequency error ~ 1/T^4; 2: ~ 1/T^6; 0: none).");
+  add("observe.diffusion", "table or boolean", "{ every = T, along = [..], across = [..], fit_from = T }, true or false",
+      "a table { every = <T>, along = [a, b, c], across = [a, b, c], fit_from = <T> }, true or false",
+      [](const Scene& s) {
+        return s.diffusion ? "{ every = " + toml_double(s.diffusion_every) + ", along = " +
+                                 triple_literal(s.diffusion_along) + ", across = " + triple_literal(s.diffusion_across) +
+                                 ", fit_from = " + toml_double(s.diffusion_fit_from) + " }"
+                           : boolean(false);
+      },
+      switch_into(&Scene::diffusion, true),
+      "Arnold diffusion (docs/frequencies.md): the actions (momenta) of every trajectory every `every` T, the "
+      "moments of their displacement along and across a resonance, and the diffusion coefficient from the "
+      "growth of the variance with a bootstrap error bar: diffusion.h5, diffusion.csv, diffusion.png.",
+      Shape::Composite);
+  add("observe.diffusion.every", "float", "> 0, a multiple of the energy sample interval",
+      "a finite float greater than 0 (in units of T)", real_of(&Scene::diffusion_every),
+      real_into(&Scene::diffusion_every, positive), "Sample interval of the actions, in T.");
+  add("observe.diffusion.along", "array of 3 floats", "not all zero", "an array [a, b, c] of floats, not all zero",
+      [](const Scene& s) { return triple_literal(s.diffusion_along); }, direction_into(&Scene::diffusion_along),
+      "The resonance's direction in action space (normalised).");
+  add("observe.diffusion.across", "array of 3 floats", "not all zero, not along", "an array [a, b, c] of floats, not all zero",
+      [](const Scene& s) { return triple_literal(s.diffusion_across); }, direction_into(&Scene::diffusion_across),
+      "A direction across the resonance (made orthogonal to `along`, normalised).");
+  add("observe.diffusion.fit_from", "float", ">= 0", "a finite float >= 0 (in units of T)",
+      real_of(&Scene::diffusion_fit_from),
+      real_into(&Scene::diffusion_fit_from, [](double v) { return v >= 0; }),
+      "The fit of the variance's growth starts at this time, in T (after the first fast oscillations).");
+}
+
 void output_keys(Rows& add) {
   add("output.dir", "string", "non-empty path", "a non-empty string (a directory path)", text_of(&Scene::output_dir),
       [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
@@ -666,6 +732,7 @@ std::vector<KeySpec> build() {
   run_keys(rows);
   observe_keys(rows);
   indicator_keys(rows);
+  analysis_keys(rows);
   output_keys(rows);
   panel_keys(rows);
   return k;

@@ -1,0 +1,103 @@
+#!/usr/bin/env bash
+# Issue 25 (long trajectories) and issue 26 (frequencies, diffusion) on one GPU, in one call:
+#   bash bench/gpu/science.sh ARNOLDWEB DEVICE OUTDIR
+# 1. the cost of observe.frequencies: the default scene (the paper's method, scenes/default_paper.toml
+#    where it exists) as a map, then with frequencies of 2 x 512 samples every 0.04 T; the FGL
+#    frequency map (scenes/fgl_frequency_map.toml, 1024^2, FLI + frequencies) against its FLI alone;
+#    its pictures (frequency_map.png, diffusion_index.png, fli.png) are kept for docs/gallery.md;
+# 2. the D(eps) scan of scenes/fgl_diffusion.toml, shortened to AW_DSCAN_T (default 1e5 T) per eps,
+#    for the values of AW_DSCAN_EPS; each run's summary.json, diffusion.csv and diffusion.png kept
+#    (bench/gpu/d_eps_fit.py fits D(eps) from them);
+# 3. a sliced long run (scenes/fig4_diffusion.toml at N = 32,768 to AW_FIG4_T, run.slice), once in
+#    one piece and once killed with kill -9 and resumed (twice), with both runs' digests.
+# Prints one line per run: case, wall seconds of the process, the run's own seconds.
+set -uo pipefail
+AW=$1 DEV=$2 OUTDIR=$3
+mkdir -p "$OUTDIR"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+run() {  # NAME OUT SCENE ARGS...: runs, prints the times, keeps summary.json under $OUTDIR/NAME
+  local name=$1 out=$2
+  shift 2
+  local t0 t1 rc
+  t0=$(date +%s.%N)
+  "$AW" run "$@" --quiet --device "$DEV" --out "$out" --force >"$tmp/$name.log" 2>&1
+  rc=$?
+  t1=$(date +%s.%N)
+  if [ $rc -ne 0 ]; then echo "$name: failed (exit $rc)"; tail -5 "$tmp/$name.log"; return 1; fi
+  mkdir -p "$OUTDIR/$name"
+  cp "$out/summary.json" "$OUTDIR/$name/"
+  python3 - "$out/summary.json" "$name" "$t0" "$t1" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+print(f"{sys.argv[2]:28s} process {float(sys.argv[4]) - float(sys.argv[3]):8.2f} s  run {s['wall_seconds']:8.2f} s"
+      f"  {s['trajectory_steps_per_second']:.3e} traj-steps/s  trajectories {s['trajectories']}")
+PY
+}
+
+echo "== 1. the cost of observe.frequencies on $DEV"
+scene=scenes/default_paper.toml
+[ -f "$scene" ] || scene=scenes/default.toml
+freq=(--set "observe.frequencies={ samples = 512, every = 0.04 }")
+# warm the kernel caches first, so that no timed run compiles
+run warm_map "$tmp/w1" "$scene" --set ensemble.trajectories=65536 --set output.images=false >/dev/null
+run warm_freq "$tmp/w2" "$scene" --set ensemble.trajectories=65536 --set output.images=false "${freq[@]}" >/dev/null
+for rep in 1 2; do
+  run "default_map_$rep" "$tmp/d1" "$scene" --set output.images=false
+  run "default_map_freq_$rep" "$tmp/d2" "$scene" --set output.images=false "${freq[@]}"
+done
+run fgl_fli_only "$tmp/f1" scenes/fgl_frequency_map.toml --set observe.frequencies=false --set output.images=false
+run fgl_fli_freq "$tmp/f2" scenes/fgl_frequency_map.toml
+mkdir -p "$OUTDIR/gallery"
+for f in frequency_map.png diffusion_index.png fli.png; do
+  [ -f "$tmp/f2/$f" ] && cp "$tmp/f2/$f" "$OUTDIR/gallery/fgl_0.01_$f"
+done
+ls "$tmp/f2" >"$OUTDIR/gallery/fgl_files.txt"
+
+echo "== 2. the D(eps) scan (scenes/fgl_diffusion.toml, ${AW_DSCAN_T:=100000} T per eps)"
+T=$AW_DSCAN_T
+every=$(python3 -c "print($T / 100)")
+fit=$(python3 -c "print($T / 10)")
+for eps in ${AW_DSCAN_EPS:-0.006 0.008 0.010 0.012 0.015 0.020}; do
+  o="$tmp/ds_$eps"
+  run "dscan_$eps" "$o" scenes/fgl_diffusion.toml --set model.epsilon="$eps" --set run.duration="$T" \
+    --set run.average="$T" --set observe.diffusion.every="$every" --set observe.diffusion.fit_from="$fit" \
+    --set observe.energy_error.every="$every" --set observe.final_states=false &&
+    for f in diffusion.csv diffusion.png; do cp "$o/$f" "$OUTDIR/dscan_$eps/"; done
+  rm -rf "$o"
+done
+
+echo "== 3. a sliced long run, in one piece and killed with kill -9 and resumed (${AW_FIG4_T:=20480} T)"
+sl=(scenes/fig4_diffusion.toml --set ensemble.trajectories=32768 --set run.duration="$AW_FIG4_T"
+    --set "observe.frames.times=[0.0, 10.0, 160.0, 2560.0, $AW_FIG4_T]" --set run.slice=1280
+    --set run.checkpoint_every=1 --set output.images=false --set observe.final_states=true)
+run fig4_plain "$tmp/p" "${sl[@]}"
+plain_s=$(python3 -c "import json; print(json.load(open('$OUTDIR/fig4_plain/summary.json'))['wall_seconds'])")
+o="$tmp/k"
+rm -rf "$o"
+t0=$(date +%s.%N)
+kills=0
+"$AW" run "${sl[@]}" --quiet --device "$DEV" --out "$o" >"$tmp/k.log" 2>&1 &
+pid=$!
+for frac in 0.5 0.4; do  # killed at half of the run's time, and again 0.4 of it after the resume
+  sleep "$(python3 -c "print($plain_s * $frac)")"
+  if kill -0 $pid 2>/dev/null; then kill -9 $pid; wait $pid 2>/dev/null; kills=$((kills + 1)); fi
+  if [ ! -f "$o/summary.json" ]; then
+    "$AW" resume "$o" --quiet --device "$DEV" >>"$tmp/k.log" 2>&1 &
+    pid=$!
+  fi
+done
+wait $pid
+t1=$(date +%s.%N)
+echo "fig4 killed $kills times, resumed: process $(python3 -c "print(round($t1 - $t0, 2))") s in all"
+mkdir -p "$OUTDIR/fig4_killed"
+cp "$o/summary.json" "$OUTDIR/fig4_killed/" 2>/dev/null || { echo "fig4 killed: no summary"; tail -5 "$tmp/k.log"; }
+python3 - "$OUTDIR/fig4_plain/summary.json" "$OUTDIR/fig4_killed/summary.json" <<'PY'
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:3])
+da, db = a.get("digests", {}), b.get("digests", {})
+print("digests of the plain run:  ", json.dumps(da, sort_keys=True))
+print("digests of the killed run: ", json.dumps(db, sort_keys=True))
+print("fig4 sliced, killed and resumed: digests", "IDENTICAL" if da == db and da else "DIFFER")
+PY

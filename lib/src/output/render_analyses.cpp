@@ -1,0 +1,194 @@
+// arnoldweb: the pictures of the analyses (analysis_files.hpp,
+// docs/frequencies.md).
+//  frequency_map.png  every trajectory as a point (nu_x, nu_y) of its first
+//                     window, coloured by its diffusion index log10 |dnu|;
+//                     where points share a pixel the largest index shows, so
+//                     that the chaotic layers of the resonances stand out.
+//  diffusion_index.png the index over the grid of initial conditions.
+//  diffusion.png      Var[e . dI](t) along and across the resonance with the
+//                     fitted line sigma0^2 + 2 D t and D with its error bar.
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "aw_params.h"
+#include "output/analysis_files.hpp"
+#include "output/canvas.hpp"
+#include "output/indicator_pictures.hpp"
+
+namespace arnoldweb::detail {
+namespace {
+
+std::string fmt(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4g", v);
+  return b;
+}
+
+// The value range of the finite values between two quantiles, widened by 3 %.
+std::array<double, 2> quantile_range(std::vector<double> v, double q) {
+  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
+  if (v.empty()) return {0, 1};
+  std::sort(v.begin(), v.end());
+  double lo = v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1))];
+  double hi = v[static_cast<std::size_t>((1 - q) * static_cast<double>(v.size() - 1))];
+  if (!(hi > lo)) lo -= 0.5, hi += 0.5;
+  const double m = 0.03 * (hi - lo);
+  return {lo - m, hi + m};
+}
+
+void frame(Canvas& c, double x0, double y0, double w, double h, const std::array<double, 2>& rx,
+           const std::array<double, 2>& ry, const std::string& x_label, const std::string& y_label) {
+  cairo_t* cr = c.cr();
+  cairo_set_source_rgb(cr, 0.7, 0.7, 0.7);
+  cairo_set_line_width(cr, 1);
+  cairo_rectangle(cr, x0 + 0.5, y0 + 0.5, w, h);
+  cairo_stroke(cr);
+  for (int k = 0; k <= 4; ++k) {
+    const double f = k / 4.0, tx = x0 + f * w, ty = y0 + h - f * h;
+    cairo_move_to(cr, tx, y0 + h);
+    cairo_line_to(cr, tx, y0 + h + 5);
+    cairo_move_to(cr, x0 - 5, ty);
+    cairo_line_to(cr, x0, ty);
+    cairo_stroke(cr);
+    c.text(tx, y0 + h + 18, fmt(rx[0] + f * (rx[1] - rx[0])), 11, 0.8, 0.8, 0.8, true);
+    c.text(x0 - 62, ty + 4, fmt(ry[0] + f * (ry[1] - ry[0])), 11, 0.8, 0.8, 0.8);
+  }
+  c.text(x0 + w / 2, y0 + h + 38, x_label, 13, 0.9, 0.9, 0.9, true);
+  cairo_save(cr);
+  cairo_translate(cr, x0 - 72, y0 + h / 2);
+  cairo_rotate(cr, -M_PI / 2);
+  c.text(0, 0, y_label, 13, 0.9, 0.9, 0.9, true);
+  cairo_restore(cr);
+}
+
+std::vector<double> diffusion_index(const Records& rec) {
+  std::vector<double> v(rec.count());
+  for (std::size_t t = 0; t < v.size(); ++t) v[t] = std::log10(rec.reals[t * rec.reals_per + 6]);
+  return v;
+}
+
+void render_frequency_map(const Plan& plan, const Result& r, const Records& rec, const std::string& path) {
+  const std::size_t n = rec.count();
+  std::vector<double> nx(n), ny(n);
+  for (std::size_t t = 0; t < n; ++t) nx[t] = rec.reals[t * rec.reals_per], ny[t] = rec.reals[t * rec.reals_per + 1];
+  const std::vector<double> index = diffusion_index(rec);
+  const std::array<double, 2> rx = quantile_range(nx, 0.001), ry = quantile_range(ny, 0.001);
+  const LinearScale scale(index);
+  const int w = 900, h = 960, side = 720;
+  const double x0 = 110, y0 = 60;
+  std::vector<double> raster(static_cast<std::size_t>(side) * side, -1);
+  // a sparse map draws its points larger: about a third of their spacing
+  const int dot = std::clamp(static_cast<int>(side / std::sqrt(static_cast<double>(n) + 1) / 3), 1, 4);
+  for (std::size_t t = 0; t < n; ++t) {
+    if (!std::isfinite(nx[t]) || !std::isfinite(ny[t])) continue;
+    const double fx = (nx[t] - rx[0]) / (rx[1] - rx[0]), fy = (ny[t] - ry[0]) / (ry[1] - ry[0]);
+    if (fx < 0 || fx >= 1 || fy < 0 || fy >= 1) continue;
+    const int pi = static_cast<int>(fx * side), pj = static_cast<int>((1 - fy) * side);
+    const double f = std::isfinite(index[t]) ? scale(index[t]) : 0.04;  // no change at all: the scale's foot
+    for (int j = pj; j < std::min(pj + dot, side); ++j)
+      for (int i = pi; i < std::min(pi + dot, side); ++i) {
+        double& at = raster[static_cast<std::size_t>(j) * side + static_cast<std::size_t>(i)];
+        at = std::max(at, f);
+      }
+  }
+  Canvas c(w, h);
+  c.paint(static_cast<int>(x0), static_cast<int>(y0), side, side, [&](double px, double py) {
+    const int i = std::clamp(static_cast<int>(px - x0), 0, side - 1), j = std::clamp(static_cast<int>(py - y0), 0, side - 1);
+    return raster[static_cast<std::size_t>(j) * side + static_cast<std::size_t>(i)];
+  });
+  frame(c, x0, y0, side, side, rx, ry, "nu_x (turns per T, first window)", "nu_y (turns per T, first window)");
+  linear_bar(c, x0 + (side - 500) / 2.0, y0 + side + 80, 500, 16, scale, "diffusion index log10 |nu(2) - nu(1)|");
+  c.text(20, 28, "frequency map   " + picture_title(plan), 15);
+  c.text(20, h - 12, picture_caption(r), 11, 0.7, 0.7, 0.7);
+  c.save(path);
+}
+
+void curve(Canvas& c, double x0, double y0, double w, double h, const std::array<double, 2>& rx,
+           const std::array<double, 2>& ry, const std::vector<double>& x, const std::vector<double>& y) {
+  cairo_t* cr = c.cr();
+  bool pen = false;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    if (!std::isfinite(y[k])) {
+      pen = false;
+      continue;
+    }
+    const double px = x0 + (x[k] - rx[0]) / (rx[1] - rx[0]) * w, py = y0 + h - (y[k] - ry[0]) / (ry[1] - ry[0]) * h;
+    if (pen) cairo_line_to(cr, px, py);
+    else cairo_move_to(cr, px, py);
+    pen = true;
+  }
+  cairo_stroke(cr);
+}
+
+double number(const nlohmann::json& v) { return v.is_number() ? v.get<double>() : NAN; }
+
+void diffusion_panel(Canvas& c, double x0, double y0, double w, double h, const nlohmann::json& j,
+                     const char* variance, const char* fit, const std::string& label) {
+  const nlohmann::json& m = j["moments"];
+  std::vector<double> t, v;
+  for (std::size_t k = 0; k < m["t"].size(); ++k) t.push_back(number(m["t"][k])), v.push_back(number(m[variance][k]));
+  std::vector<double> all = v;
+  all.push_back(0);
+  const std::array<double, 2> rx = {t.front(), t.back()}, ry = quantile_range(all, 0);
+  frame(c, x0, y0, w, h, rx, ry, "t (T)", label);
+  cairo_save(c.cr());
+  cairo_rectangle(c.cr(), x0, y0, w, h);
+  cairo_clip(c.cr());
+  cairo_set_line_width(c.cr(), 2);
+  cairo_set_source_rgb(c.cr(), 0.95, 0.75, 0.3);
+  curve(c, x0, y0, w, h, rx, ry, t, v);
+  const nlohmann::json& f = j[fit];
+  const double t0 = std::max(t.front(), number(j["fit_from"]) + t.front());
+  std::vector<double> ft = {t0, t.back()}, fv = {number(f["intercept"]) + number(f["slope"]) * t0,
+                                                 number(f["intercept"]) + number(f["slope"]) * t.back()};
+  cairo_set_line_width(c.cr(), 1.5);
+  cairo_set_source_rgb(c.cr(), 0.4, 0.8, 1.0);
+  const double dashes[] = {6, 4};
+  cairo_set_dash(c.cr(), dashes, 2, 0);
+  curve(c, x0, y0, w, h, rx, ry, ft, fv);
+  cairo_restore(c.cr());
+  c.text(x0 + 10, y0 + 20, "D = " + fmt(number(f["D"])) + " +- " + fmt(number(f["D_error"])) + "  (fit from t = " +
+                               fmt(t0) + ")", 12, 0.4, 0.8, 1.0);
+}
+
+void render_diffusion(const Plan& plan, const Result& r, const nlohmann::json& j, const std::string& path) {
+  const int w = 1400, h = 620;
+  Canvas c(w, h);
+  diffusion_panel(c, 110, 70, 520, 440, j, "along_variance", "along_fit", "Var[e_along . dI]");
+  diffusion_panel(c, 820, 70, 520, 440, j, "across_variance", "across_fit", "Var[e_across . dI]");
+  c.text(20, 28,
+         "diffusion of the actions along and across the resonance (" + std::to_string(j.value("trajectories", 0)) +
+             " trajectories)   " + picture_title(plan),
+         15);
+  c.text(20, h - 30, "orange: the ensemble's variance at the sample times;  dashed: sigma0^2 + 2 D t by least squares; "
+                     "error: bootstrap over trajectories", 11, 0.8, 0.8, 0.8);
+  c.text(20, h - 12, picture_caption(r), 11, 0.7, 0.7, 0.7);
+  c.save(path);
+}
+
+}  // namespace
+
+void write_analysis_pictures(const Plan& plan, const Result& r, const std::string& dir,
+                             std::vector<std::string>& names) {
+  if (const Records* rec = r.records_of("frequencies"); rec && rec->count() > 0) {
+    render_frequency_map(plan, r, *rec, dir + "/frequency_map.png");
+    names.push_back("frequency_map.png");
+    if (plan.scene.initial == "grid") {
+      write_grid_picture(plan, r, dir + "/diffusion_index.png", diffusion_index(*rec),
+                         "diffusion index log10 |nu(2) - nu(1)|");
+      names.push_back("diffusion_index.png");
+    }
+  }
+  if (const auto it = r.analyses.find("diffusion"); it != r.analyses.end()) {
+    const nlohmann::json j = nlohmann::json::parse(it->second);
+    if (j.contains("moments") && j.contains("along_fit")) {
+      render_diffusion(plan, r, j, dir + "/diffusion.png");
+      names.push_back("diffusion.png");
+    }
+  }
+}
+
+}  // namespace arnoldweb::detail

@@ -1,0 +1,64 @@
+// arnoldweb: the planner's part for the frequency analysis and the diffusion
+// samples (analysis_plan.hpp).
+#include "plan/analysis_plan.hpp"
+
+#include <cmath>
+
+#include "plan/checks.hpp"
+
+namespace arnoldweb::detail {
+namespace {
+
+std::string fmt(double v) { return show_number(v); }
+
+}  // namespace
+
+void plan_analysis(const Scene& scene, const Plan& p) {
+  const std::int64_t segments = p.windows * p.segments_per_window;
+  if (scene.frequencies) {
+    const double needed = 2.0 * scene.frequency_samples * scene.frequency_every;
+    if (static_cast<double>(segments / p.frequency_stride) < 2.0 * scene.frequency_samples)
+      fail_at(scene, "observe.frequencies.samples",
+              "two windows of " + std::to_string(scene.frequency_samples) + " samples every " +
+                  fmt(scene.frequency_every) + " T take " + fmt(needed) + " T, and run.duration is " +
+                  fmt(scene.duration) + " T: choose fewer samples, a shorter interval or a longer run");
+    if (p.slices > 1)
+      fail_at(scene, "run.slice",
+              "the frequency analysis keeps a window's samples on the device between time slices, which slices "
+              "do not carry: run observe.frequencies without run.slice");
+  }
+  if (scene.diffusion) {
+    if (exact_ratio(scene.duration, scene.diffusion_every) == 0)
+      fail_at(scene, "observe.diffusion.every",
+              fmt(scene.diffusion_every) + " T does not divide run.duration = " + fmt(scene.duration) + " T");
+    const auto& a = scene.diffusion_along;
+    const auto& c = scene.diffusion_across;
+    const double dot = a[0] * c[0] + a[1] * c[1] + a[2] * c[2];
+    const double na = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    const double nc = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    if (std::fabs(dot) > (1 - 1e-9) * na * nc)
+      fail_at(scene, "observe.diffusion.across", "is parallel to observe.diffusion.along: choose a direction across it");
+    if (!(scene.diffusion_fit_from < scene.duration))
+      fail_at(scene, "observe.diffusion.fit_from",
+              fmt(scene.diffusion_fit_from) + " T is not before the end of the run (run.duration = " +
+                  fmt(scene.duration) + " T)");
+  }
+}
+
+void fill_analysis_ints(const Scene& scene, const Plan& p, IntParams& ip) {
+  ip.energy_stride = p.energy_stride;
+  ip.frequency_stride = p.frequency_stride;
+  ip.diffusion_stride = p.diffusion_stride;
+  if (scene.frequencies) {
+    ip.frequency_samples = scene.frequency_samples;
+    ip.frequency_order = scene.frequency_window;
+    ip.series_reals = 6 * static_cast<std::int64_t>(scene.frequency_samples);  // a window: 3 angles, re and im
+  }
+  if (scene.diffusion) ip.diffusion_samples = exact_ratio(scene.duration, scene.diffusion_every);
+}
+
+void fill_analysis_reals(const Scene& scene, RealParams& rp) {
+  if (scene.frequencies) rp.frequency_every = scene.frequency_every;
+}
+
+}  // namespace arnoldweb::detail

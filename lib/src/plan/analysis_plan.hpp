@@ -1,0 +1,20 @@
+// arnoldweb: the planner's part for the analyses of trajectories over time
+// (docs/frequencies.md): the frequency analysis (observe.frequencies: two
+// windows of samples, their work memory) and the action samples of the
+// diffusion coefficient (observe.diffusion): their checks against the
+// schedule and their parameters in the kernels' blocks.
+#pragma once
+
+#include "arnoldweb/plan.hpp"
+#include "params/kernel_params.hpp"
+
+namespace arnoldweb::detail {
+
+// Checks (SceneError naming the key) after the schedule is made.
+void plan_analysis(const Scene& scene, const Plan& p);
+
+// Their parameters (the strides come from the schedule).
+void fill_analysis_ints(const Scene& scene, const Plan& p, IntParams& ip);
+void fill_analysis_reals(const Scene& scene, RealParams& rp);
+
+}  // namespace arnoldweb::detail

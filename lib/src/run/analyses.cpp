@@ -1,0 +1,94 @@
+// arnoldweb: the analyses of a finished run (analyses.hpp).
+#include "run/analyses.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "arnoldweb/diffusion.hpp"
+#include "aw_params.h"
+
+namespace arnoldweb::detail {
+namespace {
+
+using json = nlohmann::json;
+
+json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+json fit_json(const DiffusionFit& f) {
+  return {{"D", f.D},
+          {"D_error", f.D_error},
+          {"D_68", {f.D_low, f.D_high}},
+          {"slope", f.slope},
+          {"intercept", f.intercept},
+          {"drift", f.drift},
+          {"slope_first_half", f.slope_first_half},
+          {"slope_second_half", f.slope_second_half},
+          {"replicates", f.replicates}};
+}
+
+// The actions of the trajectories that ended with status ok, at t_k = k every.
+ActionSamples samples_of(const Plan& plan, const Records& rec) {
+  ActionSamples s;
+  s.dim = 3;
+  s.times = rec.reals_per / 3;
+  for (std::size_t k = 0; k < s.times; ++k) s.t.push_back(plan.start_time() + static_cast<double>(k) * plan.scene.diffusion_every);
+  const std::uint64_t n = rec.count();
+  for (std::uint64_t i = 0; i < n; ++i) {
+    if (rec.ints[i * rec.ints_per] != AW_STATUS_OK) continue;
+    s.actions.insert(s.actions.end(), rec.reals.begin() + static_cast<std::ptrdiff_t>(i * rec.reals_per),
+                     rec.reals.begin() + static_cast<std::ptrdiff_t>((i + 1) * rec.reals_per));
+    ++s.trajectories;
+  }
+  return s;
+}
+
+json diffusion(const Plan& plan, const Records& rec) {
+  const Scene& sc = plan.scene;
+  const ActionSamples s = samples_of(plan, rec);
+  const std::vector<double> along(sc.diffusion_along.begin(), sc.diffusion_along.end());
+  const std::vector<double> across(sc.diffusion_across.begin(), sc.diffusion_across.end());
+  json j = {{"every", sc.diffusion_every},
+            {"along", along},
+            {"across", across},
+            {"fit_from", sc.diffusion_fit_from},
+            {"flagged", rec.count() - s.trajectories},
+            {"definition", "Var[e . dI](t) = sigma0^2 + 2 D t by least squares over t >= fit_from; D in action^2 per "
+                           "T; error: bootstrap over trajectories"}};
+  try {
+    const DiffusionMoments m = diffusion_moments(s, {along, across});
+    DiffusionOptions o;
+    o.t_min = plan.start_time() + sc.diffusion_fit_from;
+    j["trajectories"] = m.used;
+    j["excluded"] = m.excluded;
+    j["along_fit"] = fit_json(fit_diffusion(s, along, o));
+    // across: the direction made orthogonal to `along`, as the moments use it
+    std::vector<double> f = across;
+    double aa = 0, af = 0;
+    for (int c = 0; c < 3; ++c) aa += along[c] * along[c], af += along[c] * f[c];
+    for (int c = 0; c < 3; ++c) f[c] -= af / aa * along[c];
+    j["across_fit"] = fit_json(fit_diffusion(s, f, o));
+    json t = json::array(), am = json::array(), av = json::array(), cv = json::array();
+    for (std::size_t k = 0; k < m.t.size(); ++k) {
+      t.push_back(m.t[k]);
+      am.push_back(number_or_null(m.along_mean[k]));
+      av.push_back(number_or_null(m.along_variance[k]));
+      cv.push_back(number_or_null(m.across_variance[k]));
+    }
+    j["moments"] = {{"t", t}, {"along_mean", am}, {"along_variance", av}, {"across_variance", cv}};
+  } catch (const std::invalid_argument& e) {
+    j["error"] = e.what();  // too few trajectories left, ...: said, not fatal
+  }
+  return j;
+}
+
+}  // namespace
+
+void analyse(const Plan& plan, Result& result) {
+  if (plan.scene.diffusion)
+    if (const Records* rec = result.records_of("actions"); rec && rec->count() > 0)
+      result.analyses["diffusion"] = diffusion(plan, *rec).dump();
+}
+
+}  // namespace arnoldweb::detail
