@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -89,8 +90,20 @@ std::vector<std::string> write_job(const Job& job, const JobResult& result, cons
 std::vector<std::string> write_outputs(const Plan& plan, const Result& result, const std::string& dir,
                                        const OutputOptions& options);
 
-// The summary as JSON text; `files` lists the files of its directory.
-std::string summary_json(const Plan& plan, const Result& result, const std::vector<std::string>& files = {});
+// A file of an output directory as its summary.json records it
+// ("file_digests"): the size and the XXH3-128 digest of its bytes, taken by
+// the atomic writer that put it in place and checked when the directory is
+// read back (render, compare, resume, Python; docs/reliability.md).
+struct FileDigest {
+  std::uint64_t bytes = 0;
+  std::string xxh3_128;  // 32 lowercase hex digits
+};
+using FileDigests = std::map<std::string, FileDigest>;  // by name relative to the directory
+
+// The summary as JSON text; `files` lists the files of its directory and
+// `digests` their sizes and digests ("file_digests", written when given).
+std::string summary_json(const Plan& plan, const Result& result, const std::vector<std::string>& files = {},
+                         const FileDigests* digests = nullptr);
 
 // Individual writers (each atomic).
 void write_text_file(const std::string& path, const std::string& text);
