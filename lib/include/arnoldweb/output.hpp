@@ -157,10 +157,13 @@ struct SavedMaps {
   std::vector<std::vector<std::uint64_t>> frames;  // one map per frame (observe.frames)
   int zoom_resolution = 0;                // R (0: no zoom)
   std::vector<std::uint64_t> zoom;        // R x R counts, row y then column x
+  std::string note;                       // "" or a note for the user (an older directory: files unchecked)
 };
-// OutputError naming the directory or the file that is missing, unreadable or
-// inconsistent (a map whose size is not 12 nside^2). A run with a zoom but no
-// velocity map gives an empty map, one without either has no map.h5 (an error).
+// SavedRunError (exit 2) naming the directory or the file that is missing, not
+// a plain file, damaged (its size or digest is not what summary.json records)
+// or inconsistent (a map of another shape than summary.json declares;
+// docs/reliability.md). A run with a zoom but no velocity map gives an empty
+// map, one without either has no map.h5 (an error).
 SavedMaps read_saved_maps(const std::string& dir);
 
 // Draws the pictures of an output directory written earlier (from its
