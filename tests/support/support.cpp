@@ -124,6 +124,7 @@ StartedCli start_cli(const std::vector<std::string>& args, const CliOptions& o) 
     close(fds[0]);
     close(fds[1]);
     if (!o.cwd.empty() && chdir(o.cwd.c_str()) != 0) _exit(126);
+    std::signal(SIGQUIT, SIG_DFL);  // as at a terminal (a background job of a shell starts with it ignored)
     if (o.file_size_limit > 0) {
       std::signal(SIGXFSZ, SIG_IGN);
       rlimit lim{static_cast<rlim_t>(o.file_size_limit), static_cast<rlim_t>(o.file_size_limit)};
