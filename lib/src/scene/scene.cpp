@@ -65,6 +65,8 @@ Scene parse_scene(const std::string& text, const std::string& file,
   apply_overrides(root, overrides, origins, problems);
   check_structure(root, problems);
   read_values(root, origins, problems, scene);
+  // the file as written (parsed again: a copy of the tree loses the lines)
+  if (!overrides.empty()) check_replaced_values(toml::parse(text, scene.file), origins, problems);
   if (!problems.empty()) problems.throw_first();
   return scene;
 }
