@@ -204,6 +204,11 @@ void bind_result(nb::module_& m) {
            }, "summary.json of a part as the library writes it (without the list of files).")
       .def("write", &write, nb::arg("dir"), nb::arg("force"), nb::arg("scene_file"),
            "Writes the outputs into dir with the library's output code (staging, force rules); returns the paths.");
+  m.def(
+      "read_saved_summary", [](const std::string& dir) { return json_loads(arnoldweb::read_saved_summary(dir)); },
+      nb::arg("dir"),
+      "summary.json of an output directory, read and checked as render and compare read it "
+      "(a plain file, a JSON object of the right form; OutputError otherwise).");
 }
 
 }  // namespace awpy

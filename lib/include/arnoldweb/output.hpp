@@ -166,6 +166,11 @@ struct SavedMaps {
 // map, one without either has no map.h5 (an error).
 SavedMaps read_saved_maps(const std::string& dir);
 
+// <dir>/summary.json, read and checked as every reader of saved runs does
+// (a plain file, a JSON object of the form arnoldweb writes): its text.
+// SavedRunError otherwise.
+std::string read_saved_summary(const std::string& dir);
+
 // Draws the pictures of an output directory written earlier (from its
 // summary.json and map.h5; e.g. a GPU node's run, on a machine with cairo),
 // its panels' and figure.png. Returns the paths written.

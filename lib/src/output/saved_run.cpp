@@ -167,7 +167,12 @@ void SavedDir::check_fields() const {
   if (!j_.is_object())
     throw SavedRunError(summary_path(), std::string("must be a JSON object, it is ") + j_.type_name() +
                                             " (not a summary.json as arnoldweb writes it)");
+  // what every reader takes from it, so that render and compare agree on what is damaged
   text("/arnoldweb");
+  text("/scene_toml");
+  for (const char* p : {"/trajectories", "/completed", "/binned", "/maps/nside", "/maps/frames",
+                        "/maps/zoom_resolution"})
+    count(p);
   if (const json* files = at_pointer(j_, "/files")) {
     if (!files->is_array()) bad_field("/files", "a list of file names");
     for (const json& f : *files)
@@ -301,5 +306,7 @@ SavedMaps read_saved_maps(const std::string& dir) {
   s.zoom = std::move(r.zoom);
   return s;
 }
+
+std::string read_saved_summary(const std::string& dir) { return detail::SavedDir(dir).summary_text(); }
 
 }  // namespace arnoldweb
