@@ -16,41 +16,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Saved {
-  Plan plan;
-  Result result;
-};
-
-// The scene as run must declare the maps that map.h5 holds: the pictures are
-// drawn with the scene's nside, frames and zoom.
-void check_declared(const detail::SavedDir& saved, const Plan& plan) {
-  const auto differs = [&](const char* field, std::uint64_t declared, const std::string& key, std::uint64_t asked) {
-    if (declared != asked)
-      throw SavedRunError(saved.summary_path(), "scene_toml gives " + key + " = " + std::to_string(asked) + ", but " +
-                                                    field + " = " + std::to_string(declared) +
-                                                    ": the summary does not describe its map.h5");
-  };
-  differs("maps.nside", saved.count("/maps/nside"), "observe.velocity_map.nside",
-          plan.scene.velocity_map ? static_cast<std::uint64_t>(plan.scene.nside) : 0);
-  differs("maps.frames", saved.count("/maps/frames"), "the number of frames", static_cast<std::uint64_t>(plan.frames));
-  differs("maps.zoom_resolution", saved.count("/maps/zoom_resolution"), "observe.zoom.resolution",
-          static_cast<std::uint64_t>(plan.zoom_resolution));
-}
-
-Saved load(const detail::SavedDir& saved) {
-  Saved s;
-  s.plan = make_plan(parse_scene(saved.text("/scene_toml"), saved.summary_path()));
-  check_declared(saved, s.plan);
-  Result& r = s.result;
-  r.trajectories = saved.count("/trajectories");
-  r.completed = saved.count("/completed");
-  r.binned = saved.count("/binned");
-  r.device.id = saved.text("/device/id");
-  r.device.name = saved.text("/device/name");
-  detail::read_saved_map_h5(saved, r);
-  return s;
-}
-
 // Adds the files drawn into a saved directory to its summary.json: to its
 // list of files, so that the directory stays recognisably arnoldweb's, and
 // with their new sizes and digests, so that it still reads back checked.
@@ -75,15 +40,15 @@ std::vector<std::string> render_saved(const std::string& dir) {
     throw OutputError(dir, "this build has no pictures (cairo was not found when it was configured)");
   // everything is read and checked before anything is drawn
   const detail::SavedDir main_dir(dir);
-  const Saved main = load(main_dir);
+  const detail::SavedRun main = detail::read_saved_run(main_dir);
   std::vector<detail::SavedDir> panel_dirs;
-  std::vector<Saved> panels;
+  std::vector<detail::SavedRun> panels;
   std::vector<const Scene::Panel*> panel_of;
   for (const Scene::Panel& p : main.plan.scene.panels) {
     const std::string sub = "panel-" + p.name;
     if (!main_dir.holds(sub + "/summary.json")) continue;  // the run stopped before this panel
     panel_dirs.emplace_back(main_dir, sub);
-    panels.push_back(load(panel_dirs.back()));
+    panels.push_back(detail::read_saved_run(panel_dirs.back()));
     panel_of.push_back(&p);
   }
   std::vector<FigurePanel> figure_panels;

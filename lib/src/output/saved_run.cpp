@@ -10,6 +10,7 @@
 
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/output.hpp"
+#include "arnoldweb/scene.hpp"
 #include "aw_params.h"
 #include "os/regular_file.hpp"
 #include "output/file_digest.hpp"
@@ -168,8 +169,7 @@ void SavedDir::check_fields() const {
     throw SavedRunError(summary_path(), std::string("must be a JSON object, it is ") + j_.type_name() +
                                             " (not a summary.json as arnoldweb writes it)");
   // what every reader takes from it, so that render and compare agree on what is damaged
-  text("/arnoldweb");
-  text("/scene_toml");
+  for (const char* p : {"/arnoldweb", "/scene_toml", "/device/id", "/device/name"}) text(p);
   for (const char* p : {"/trajectories", "/completed", "/binned", "/maps/nside", "/maps/frames",
                         "/maps/zoom_resolution"})
     count(p);
@@ -285,6 +285,40 @@ int read_saved_map_h5(const SavedDir& saved, Result& r) {
   if (!dims_of(f.id, "zoom", path).empty() || zoom > 0)
     r.zoom = read_counts(f.id, "zoom", {zoom, zoom}, path, "maps.zoom_resolution = " + std::to_string(zoom));
   return static_cast<int>(zoom);
+}
+
+namespace {
+
+// The scene as run must declare the maps that map.h5 holds: pictures are
+// drawn with the scene's nside, frames and zoom.
+void check_declared(const SavedDir& saved, const Plan& plan) {
+  const auto differs = [&](const char* field, std::uint64_t declared, const std::string& key, std::uint64_t asked) {
+    if (declared != asked)
+      throw SavedRunError(saved.summary_path(), "scene_toml gives " + key + " = " + std::to_string(asked) + ", but " +
+                                                    field + " = " + std::to_string(declared) +
+                                                    ": the summary does not describe its map.h5");
+  };
+  differs("maps.nside", saved.count("/maps/nside"), "observe.velocity_map.nside",
+          plan.scene.velocity_map ? static_cast<std::uint64_t>(plan.scene.nside) : 0);
+  differs("maps.frames", saved.count("/maps/frames"), "the number of frames", static_cast<std::uint64_t>(plan.frames));
+  differs("maps.zoom_resolution", saved.count("/maps/zoom_resolution"), "observe.zoom.resolution",
+          static_cast<std::uint64_t>(plan.zoom_resolution));
+}
+
+}  // namespace
+
+SavedRun read_saved_run(const SavedDir& saved) {
+  SavedRun s;
+  s.plan = make_plan(parse_scene(saved.text("/scene_toml"), saved.summary_path()));
+  check_declared(saved, s.plan);
+  Result& r = s.result;
+  r.trajectories = saved.count("/trajectories");
+  r.completed = saved.count("/completed");
+  r.binned = saved.count("/binned");
+  r.device.id = saved.text("/device/id");
+  r.device.name = saved.text("/device/name");
+  read_saved_map_h5(saved, r);
+  return s;
 }
 
 }  // namespace detail

@@ -18,6 +18,7 @@
 #include <optional>
 #include <string>
 
+#include "arnoldweb/plan.hpp"
 #include "arnoldweb/result.hpp"
 
 namespace arnoldweb::detail {
@@ -72,5 +73,14 @@ class SavedDir {
 // each checked against the shape summary.json declares for it ("maps").
 // Returns the zoom's resolution (0: none).
 int read_saved_map_h5(const SavedDir& saved, Result& r);
+
+// A saved run as render draws it: the plan of its scene as run (summary.json's
+// scene_toml, which must declare the maps map.h5 holds), the counts of
+// summary.json and the maps of map.h5.
+struct SavedRun {
+  Plan plan;
+  Result result;
+};
+SavedRun read_saved_run(const SavedDir& saved);
 
 }  // namespace arnoldweb::detail
