@@ -20,7 +20,6 @@
 // Declared shapes are bounded (nside <= 256, zoom <= 1024) so that an input
 // cannot ask for gigabytes of map: larger ones only allocate more.
 #include <nlohmann/json.hpp>
-#include <xxhash.h>
 
 #include <cstdint>
 #include <cstdio>
@@ -33,6 +32,7 @@
 
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/output.hpp"
+#include "output/file_digest.hpp"
 #include "output/saved_run.hpp"
 
 namespace {
@@ -61,14 +61,6 @@ void expect_clean(const char* stage, Read read) {
   }
 }
 
-std::string hex128(const std::string& bytes) {
-  const XXH128_hash_t h = XXH3_128bits(bytes.data(), bytes.size());
-  char buf[33];
-  std::snprintf(buf, sizeof buf, "%016llx%016llx", static_cast<unsigned long long>(h.high64),
-                static_cast<unsigned long long>(h.low64));
-  return buf;
-}
-
 // The summary as the harness writes it, or "" to skip the input (declared
 // shapes beyond the bounds). "trust" digests of map.h5 are filled in.
 std::string prepare(const std::string& summary, const std::string& map, bool has_map) {
@@ -84,7 +76,7 @@ std::string prepare(const std::string& summary, const std::string& map, bool has
   const json::json_pointer trust("/file_digests/map.h5/xxh3_128");
   if (!has_map || !j.contains(trust) || j.at(trust) != "trust") return summary;
   json fixed = j;
-  fixed["file_digests"]["map.h5"] = {{"bytes", map.size()}, {"xxh3_128", hex128(map)}};
+  fixed["file_digests"]["map.h5"] = arnoldweb::detail::file_digest_json(arnoldweb::detail::digest_bytes(map));
   return fixed.dump();
 }
 

@@ -65,7 +65,7 @@ def test_summary_is_read_back_checked(small_scene, tmp_path):
     os.remove(out / "summary.json")
     os.mkfifo(out / "summary.json")
     done = []
-    t = threading.Thread(target=lambda: done.append(pytest.raises(aw.OutputError, lambda: r.summary)))
+    t = threading.Thread(target=lambda: done.append(pytest.raises(aw.OutputError, lambda: r.summary)), daemon=True)
     t.start()
     t.join(10)
     assert done, "reading a FIFO as summary.json blocked"

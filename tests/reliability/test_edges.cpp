@@ -4,13 +4,9 @@
 // case failed before the fix it guards (ARNOLDWEB_TEST_CLI=<old build>).
 #include <doctest/doctest.h>
 #include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <chrono>
 #include <filesystem>
 #include <fstream>
-#include <thread>
 
 #include "support.hpp"
 
@@ -30,21 +26,14 @@ const std::string kQuick =
     "[model]\nenergy = 15.0\n[ensemble]\ntrajectories = 200\n[integrator]\nstep = 0.02\n"
     "[run]\naverage = 1.0\nduration = 1.0\n[observe]\nvelocity_map = { nside = 8 }\n[output]\nimages = false\n";
 
-// Waits up to `seconds` for a started CLI to end; its exit code (128 + signal
-// when killed), or -2 after killing it when it did not end.
-int finish_within(awtest::StartedCli& cli, double seconds) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  int status = 0;
-  while (waitpid(cli.pid, &status, WNOHANG) == 0) {
-    if (std::chrono::steady_clock::now() > end) {
-      kill(cli.pid, SIGKILL);
-      waitpid(cli.pid, &status, 0);
-      return -2;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  close(cli.fd);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+// A run of 20 million trajectories (tens of seconds) into dir/out, started
+// and seen computing (its progress line).
+awtest::StartedCli started_long_run(const std::string& dir) {
+  const std::string scene = write(dir, "scene.toml", kQuick);
+  awtest::StartedCli cli = awtest::start_cli({"run", scene, "--device", "cpu", "--out", dir + "/out", "--set",
+                                              "ensemble.trajectories=20000000", "--set", "ensemble.chunk=2000"});
+  REQUIRE(cli.wait_for("progress:", 60));
+  return cli;
 }
 
 }  // namespace
@@ -165,14 +154,11 @@ TEST_SUITE("reliability") {
 
   TEST_CASE("12. a stop says what is still to be written, and ends") {
     const std::string dir = awtest::temp_dir("stop");
-    const std::string scene = write(dir, "scene.toml", kQuick);
-    awtest::StartedCli cli = awtest::start_cli({"run", scene, "--device", "cpu", "--out", dir + "/out", "--set",
-                                                "ensemble.trajectories=20000000", "--set", "ensemble.chunk=2000"});
-    REQUIRE(cli.wait_for("progress:", 60));
+    awtest::StartedCli cli = started_long_run(dir);
     kill(cli.pid, SIGTERM);
     CHECK(cli.wait_for("(up to about ", 20));  // the bytes to write (none said before)
     CAPTURE(cli.output);
-    CHECK(finish_within(cli, 60) == 128 + SIGTERM);
+    CHECK(cli.finish_within(60) == 128 + SIGTERM);
     CHECK(fs::exists(dir + "/out/summary.json"));
   }
 }
@@ -186,13 +172,10 @@ TEST_SUITE("reliability-pocl") {
                          "no OpenCL platform here (Debian: pocl-opencl-icd): nothing loads LLVM's signal handlers"))
       return;
     const std::string dir = awtest::temp_dir("quit");
-    const std::string scene = write(dir, "scene.toml", kQuick);
     // --device cpu: PoCL is loaded all the same, to list the devices
-    awtest::StartedCli cli = awtest::start_cli({"run", scene, "--device", "cpu", "--out", dir + "/out", "--set",
-                                                "ensemble.trajectories=20000000", "--set", "ensemble.chunk=2000"});
-    REQUIRE(cli.wait_for("progress:", 60));
+    awtest::StartedCli cli = started_long_run(dir);
     kill(cli.pid, SIGQUIT);
-    const int rc = finish_within(cli, 20);  // it ran on, then ended with exit 0, before
+    const int rc = cli.finish_within(20);  // it ran on, then ended with exit 0, before
     CHECK(rc == 128 + SIGQUIT);
     CHECK_FALSE(fs::exists(dir + "/out"));  // at once: nothing written
   }

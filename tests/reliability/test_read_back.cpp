@@ -5,18 +5,13 @@
 // summary.json declares, and refuse anything else with exit 2 naming the file.
 // Each case failed before the fix it guards (ARNOLDWEB_TEST_CLI=<old build>).
 #include <doctest/doctest.h>
-#include <signal.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <xxhash.h>
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <thread>
 
 #include "support.hpp"
 
@@ -60,29 +55,13 @@ std::string copy_of(const std::string& dir, const std::string& name) {
   return to;
 }
 
-// The CLI with a deadline: its exit code, or -2 if it was still running after
-// `seconds` (then it is killed): a read that blocks is a failure, not a hang
-// of the test.
+// The CLI with a deadline (a read that blocks is a failure, not a hang of
+// the test): its exit code, -2 if it was still running after `seconds`.
 int run_within(const std::vector<std::string>& args, double seconds, std::string* out) {
   awtest::StartedCli cli = awtest::start_cli(args);
-  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  int status = 0;
-  while (waitpid(cli.pid, &status, WNOHANG) == 0) {
-    if (std::chrono::steady_clock::now() > end) {
-      kill(cli.pid, SIGKILL);
-      waitpid(cli.pid, &status, 0);
-      close(cli.fd);
-      *out = "(still running after the deadline)";
-      return -2;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  char buf[4096];
-  ssize_t n;
-  while ((n = read(cli.fd, buf, sizeof buf)) > 0) cli.output.append(buf, static_cast<std::size_t>(n));
-  close(cli.fd);
+  const int rc = cli.finish_within(seconds);
   *out = cli.output;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return rc;
 }
 
 // render and compare of a damaged directory: both exit 2 in a few seconds,
