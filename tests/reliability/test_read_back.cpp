@@ -157,10 +157,11 @@ TEST_SUITE("reliability") {
     j = good;
     j["scene_toml"] = 15;
     cases.push_back({"scene_toml a number", j});
-    for (const auto& [what, text] : cases) {
+    for (const auto& c : cases) {
+      const std::string& what = c.first;  // (clang 14 cannot capture a structured binding in CAPTURE)
       CAPTURE(what);
       const std::string bad = copy_of(a, "bad");
-      write_summary(bad, text);
+      write_summary(bad, c.second);
       both_refuse(bad, b, bad + "/summary.json");  // render: "unexpected error" (exit 1) before
     }
     const std::string not_json = copy_of(a, "not-json");
