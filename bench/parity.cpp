@@ -123,17 +123,17 @@ int main(int argc, char** argv) {
           have_ref = true;
         }
         const bool same = digest_map(r) == digest_map(reference) &&
-                          digest_final_states(r) == digest_final_states(reference);
+                          digest_records(r, "final_states") == digest_records(reference, "final_states");
         // drift from the reference, in ulps of the final momenta
         std::vector<double> ulps;
         std::uint64_t diverged = 0;
         for (std::size_t t = 0; t < n; ++t) {
           double worst = 0;
           for (int k = 3; k < 6; ++k) {
-            const double a = r.final_r[t * 6 + k], b = reference.final_r[t * 6 + k];
+            const double a = r.reals("final_states")[t * 6 + k], b = reference.reals("final_states")[t * 6 + k];
             worst = std::max(worst, std::fabs(a - b) / ulp_of(b, fl));
           }
-          const double dp = std::fabs(r.final_r[t * 6 + 3] - reference.final_r[t * 6 + 3]);
+          const double dp = std::fabs(r.reals("final_states")[t * 6 + 3] - reference.reals("final_states")[t * 6 + 3]);
           if (dp > 1e-2) ++diverged;
           ulps.push_back(worst);
         }
@@ -152,12 +152,12 @@ int main(int argc, char** argv) {
         if (math == MathMode::Portable && !same) ++failures;
         std::printf("| %s | %s | %s | %.2f | %.12s | %.12s | %s | %.3g | %.3g | %.4f | %.3f |\n", c.name.c_str(),
                     to_string(math), id.c_str(), r.wall_seconds, digest_map(r).c_str(),
-                    digest_final_states(r).c_str(), same ? "yes" : "NO", median, p99,
+                    digest_records(r, "final_states").c_str(), same ? "yes" : "NO", median, p99,
                     static_cast<double>(diverged) / static_cast<double>(n), chi2dof);
         std::fflush(stdout);
         if (csv)
           csv << c.name << ',' << to_string(math) << ',' << id << ",\"" << r.device.name << "\"," << r.wall_seconds << ','
-              << digest_map(r) << ',' << digest_final_states(r) << ',' << (same ? 1 : 0) << ',' << median << ','
+              << digest_map(r) << ',' << digest_records(r, "final_states") << ',' << (same ? 1 : 0) << ',' << median << ','
               << p99 << ',' << static_cast<double>(diverged) / static_cast<double>(n) << ',' << chi2dof << '\n';
       }
     }

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "arnoldweb/device.hpp"
+#include "arnoldweb/errors.hpp"
 #include "arnoldweb/plan.hpp"
 #include "command.hpp"
 #include "plan_report.hpp"
@@ -24,7 +25,16 @@ void add_check_command(CLI::App& app, Action& action) {
       std::string device_warning;
       const PreparedJob p = prepare_job(f->scene, f->force, &device_warning);
       const Plan& plan = p.job.main();
-      const std::string dev = plan.scene.device == "auto" ? default_device_id() + " (auto)" : plan.scene.device;
+      std::string dev = plan.scene.device;
+      if (dev == "auto" || dev == "all") {
+        std::string ids;
+        try {
+          for (const std::string& id : device_ids(dev)) ids += (ids.empty() ? "" : ",") + id;
+        } catch (const Error&) {
+          ids = "?";  // the warning below says why
+        }
+        dev = ids + " (" + dev + ")";
+      }
       print_plan(std::cout, plan, dev);
       for (std::size_t k = 1; k < p.job.parts.size(); ++k)
         std::cout << "panel        " << p.job.parts[k].name << ": " << short_number(p.job.parts[k].plan.trajectory_steps)

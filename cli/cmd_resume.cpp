@@ -45,7 +45,7 @@ void add_resume_command(CLI::App& app, Action& action) {
   auto flags = std::make_shared<ResumeFlags>();
   auto* c = app.add_subcommand("resume", "Continue an interrupted run from the checkpoint beside its output directory");
   c->add_option("outdir", flags->out, "The output directory of the interrupted run")->required();
-  c->add_option("--device,-d", flags->device, "Device id: cpu, opencl:N, cuda:N or auto (default: the scene's)");
+  c->add_option("--device,-d", flags->device, "Device: cpu, opencl:N, cuda:N, auto, all (every GPU) or a list cuda:0,cuda:1 (default: the scene's)");
   c->add_flag("--quiet,-q", flags->quiet, "Print nothing but errors");
   c->callback([&action, flags] { action = [flags] { return resume(*flags); }; });
 }

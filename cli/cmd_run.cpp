@@ -97,9 +97,19 @@ int execute_job(const PreparedJob& prepared, bool quiet, const std::optional<Fou
                 const std::optional<std::string>& device_option) {
   const Job& job = prepared.job;
   if (!resume) refuse_beside_checkpoint(prepared.out_dir);
-  auto backend = open_backend(rank_device(device_option, job.main().scene.device));
+  // one process drives every device that run.device (or --device) names; an MPI rank its own
+  const auto backends = open_backends(rank_device(device_option, job.main().scene.device));
+  std::vector<Backend*> devices;
+  std::vector<DeviceInfo> infos;
+  for (const auto& b : backends) {
+    devices.push_back(b.get());
+    infos.push_back(b->info());
+  }
+  Backend& backend = *devices.front();  // under MPI, this rank's only device
   if (!quiet) {
-    print_plan(std::cout, job.main(), backend->info().id + " (" + backend->info().name + ")");
+    const DeviceInfo all = describe_devices(infos);
+    print_plan(std::cout, job.main(),
+               all.id + " (" + all.name + (devices.size() > 1 ? "; one process, a thread per device" : "") + ")");
     std::cout.flush();
   }
   CheckpointStore store(prepared.out_dir, prepared.output);
@@ -112,7 +122,7 @@ int execute_job(const PreparedJob& prepared, bool quiet, const std::optional<Fou
     if (!quiet) std::cout << "resuming    from " << store.file() << "\n";
   }
   if (cluster() && !quiet)
-    std::cout << "ranks        " << cluster()->size() << " (MPI; rank 0 coordinates, drives " << backend->info().id
+    std::cout << "ranks        " << cluster()->size() << " (MPI; rank 0 coordinates, drives " << backend.info().id
               << " and writes the outputs)\n";
   share_scene(job.main().scene);  // the other ranks plan it and serve
   StopSignals signals(prepared.output.expected_bytes);  // held until the outputs are written
@@ -123,8 +133,8 @@ int execute_job(const PreparedJob& prepared, bool quiet, const std::optional<Fou
   PartProgress progress(quiet);
   JobResult result;
   try {
-    result = cluster() ? cluster()->run_job(job, *backend, options, &progress)
-                       : run_job(job, *backend, options, &progress);
+    result = cluster() ? cluster()->run_job(job, backend, options, &progress)
+                       : run_job_on(job, devices, options, &progress);
   } catch (const Error&) {
     if (!store.file().empty())
       std::cerr << "arnoldweb: the last checkpoint is in " << store.file() << "; `arnoldweb resume "

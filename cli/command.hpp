@@ -11,7 +11,7 @@
 
 #include <optional>
 
-#include "arnoldweb/job.hpp"
+#include "arnoldweb/run.hpp"
 #include "arnoldweb/output.hpp"
 #include "arnoldweb/scene.hpp"
 
@@ -59,6 +59,7 @@ PreparedJob prepare_scene_job(const Scene& scene, const std::string& scene_file,
                               std::string* device_warning = nullptr);
 
 void add_resume_command(CLI::App& app, Action& action);
+void add_continue_command(CLI::App& app, Action& action);
 void add_devices_command(CLI::App& app, Action& action);
 void add_methods_command(CLI::App& app, Action& action);
 void add_models_command(CLI::App& app, Action& action);

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   add_check_command(app, action);
   add_run_command(app, action);
   add_resume_command(app, action);
+  add_continue_command(app, action);
   add_bench_command(app, action);
   add_keys_command(app, action);
   add_render_command(app, action);

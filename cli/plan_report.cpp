@@ -22,8 +22,8 @@ void print_plan(std::ostream& o, const Plan& p, const std::string& device) {
   o << "scene        " << s.file << "\n"
     << "device       " << device << "\n"
     << "model        "
-    << (s.model_kind == "seibert2011"
-            ? "E = " + general_number(s.energy) + "  (eps_eff = 2/E = " + short_number(2 / s.energy) +
+    << (p.effective_perturbation != 0
+            ? "E = " + general_number(s.energy) + "  (eps_eff = " + short_number(p.effective_perturbation) +
                   ", accessible torus " + short_number(100 * p.accessible_fraction) + "%)"
             : s.model_kind + ", E = " + general_number(s.energy) + "  (energy surface reached from " +
                   short_number(100 * p.accessible_fraction) + "% of positions and directions)")
@@ -34,7 +34,7 @@ void print_plan(std::ostream& o, const Plan& p, const std::string& device) {
     << to_string(s.math) << " math\n"
     << "schedule     " << p.windows << " window(s) of " << s.average << " T = " << p.segments_per_window
     << " x " << p.steps_per_segment << " steps; " << p.steps_per_trajectory << " steps per trajectory\n"
-    << "step guard   " << (s.model_kind == "seibert2011" ? "h k |p|max = " : "h omega_max = ")
+    << "step guard   " << p.guard.quantity << " = "
     << short_number(p.guard.value) << " (refused >= pi, advised <= pi/2; " << p.guard.basis << ")\n"
     << "effects      ";
   const auto eff = p.effects();

@@ -15,17 +15,6 @@ namespace {
 
 Cluster* g_cluster = nullptr;
 
-std::vector<std::string> split_list(const std::string& s) {
-  std::vector<std::string> parts;
-  std::size_t at = 0;
-  for (;;) {
-    const std::size_t comma = s.find(',', at);
-    parts.push_back(s.substr(at, comma == std::string::npos ? std::string::npos : comma - at));
-    if (comma == std::string::npos) return parts;
-    at = comma + 1;
-  }
-}
-
 }  // namespace
 
 void set_cluster(Cluster* cluster) { g_cluster = cluster; }
@@ -40,18 +29,20 @@ void refuse_mpirun_without_mpi() {
 }
 
 std::optional<std::string> explicit_rank_device(const std::optional<std::string>& device) {
-  if (!device || device->find(',') == std::string::npos) return std::nullopt;
-  const auto list = split_list(*device);
-  const int rank = g_cluster ? g_cluster->rank() : 0;
-  return list[static_cast<std::size_t>(rank) % list.size()];
+  if (!g_cluster || !device) return std::nullopt;
+  const auto list = device_entries(*device);
+  if (list.size() < 2) return std::nullopt;
+  return list[static_cast<std::size_t>(g_cluster->rank()) % list.size()];
 }
 
 std::string rank_device(const std::optional<std::string>& device_option, const std::string& scene_device) {
-  if (auto pick = explicit_rank_device(device_option)) return *pick;
   const std::string spec = device_option ? *device_option : scene_device;
-  if (!g_cluster || g_cluster->size() <= 1) return spec;
-  // the node-local rank picks the node's device of that index, of the kind asked for
-  const std::string id = spec == "auto" ? default_device_id() : spec;
+  if (!g_cluster || g_cluster->size() <= 1) return spec;  // one process drives every device it names
+  const auto list = device_entries(spec);
+  if (list.size() > 1) return list[static_cast<std::size_t>(g_cluster->rank()) % list.size()];
+  // the node-local rank picks the node's device of that index, of the kind
+  // asked for ("all": of the default device's kind, the node's GPUs)
+  const std::string id = spec == "auto" || spec == "all" ? default_device_id() : spec;
   const std::string kind = id.substr(0, id.find(':'));
   if (kind == "cpu") return "cpu";
   std::vector<std::string> same;

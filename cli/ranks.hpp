@@ -16,11 +16,13 @@ Cluster* cluster();  // null in one process
 
 // A build without MPI started by mpirun: refused (each copy would run the whole scene).
 void refuse_mpirun_without_mpi();
-// --device a,b,c: this rank's entry (rank modulo the list's length); none without a list.
+// Under MPI, --device a,b,c: this rank's entry (rank modulo the list's
+// length); none without a list or without MPI (one process drives the whole list).
 std::optional<std::string> explicit_rank_device(const std::optional<std::string>& device_option);
-// The device this rank drives: its entry of a --device list; else, with
-// several ranks, the node's device of the node-local rank's index among the
-// devices of the kind asked for (cpu: the cpu backend); else the device asked for.
+// What this process drives. One process: the device (or list, or "all") asked
+// for. Several ranks: its entry of a list (--device's, else run.device's); else
+// the node's device of the node-local rank's index among the devices of the
+// kind asked for ("auto" and "all": the default device's kind; cpu: the cpu backend).
 std::string rank_device(const std::optional<std::string>& device_option, const std::string& scene_device);
 // Rank 0: the scene as prepared, to every other rank (collective).
 void share_scene(const Scene& scene);

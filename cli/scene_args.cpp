@@ -6,7 +6,7 @@ namespace arnoldweb::cli {
 
 void add_scene_options(CLI::App* c, SceneArgs& a) {
   c->add_option("scene", a.scene, "Scene file (TOML); see docs/scenes.md")->required();
-  c->add_option("--device,-d", a.device, "Device id: cpu, opencl:N, cuda:N or auto (overrides run.device)");
+  c->add_option("--device,-d", a.device, "Device: cpu, opencl:N, cuda:N, auto, all (every GPU) or a list cuda:0,cuda:1 (overrides run.device)");
   c->add_option("--set,-s", a.sets, "Override a scene key, e.g. --set integrator.step=0.005 (repeatable)")
       ->allow_extra_args(false);
   c->add_option("--out,-o", a.out, "Output directory (overrides output.dir)");
@@ -43,16 +43,18 @@ PreparedJob prepare_scene_job(const Scene& scene, const std::string& scene_file,
   p.output.force = force;
   p.output.scene_file = scene_file;
   p.output.expected_bytes = estimate_output_bytes(p.job);
-  // memory: the device's and this process's, before anything is computed
-  DeviceInfo device;
+  // memory: every device's and this process's, before anything is computed
+  std::vector<DeviceInfo> devices;
   try {
-    device = find_device(p.job.main().scene.device);
+    for (const std::string& id : device_ids(p.job.main().scene.device)) devices.push_back(find_device(id));
   } catch (const DeviceError& e) {
     if (!device_warning) throw;
     *device_warning = e.what();
+    devices = {DeviceInfo{}};
   }
   const std::uint64_t host = available_memory();
-  for (const JobPart& part : p.job.parts) check_memory(part.plan, device, host);
+  for (const DeviceInfo& device : devices)
+    for (const JobPart& part : p.job.parts) check_memory(part.plan, device, host);
   p.out_dir = check_output_dir(p.job.main().scene.output_dir, p.output);
   return p;
 }

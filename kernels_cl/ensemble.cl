@@ -7,17 +7,16 @@
 #include "aw_ensemble.h"
 #include "aw_reduce.h"
 
-__kernel void aw_ensemble(ulong chunk_first, ulong chunk_end, __constant aw_rparams* rp,
-                          __constant aw_iparams* ip, __global uint* map, __global uint* counters,
-                          __global real* initial_r, __global real* final_r,
-                          __global long* final_i, __global real* indicators, __global real* group_stats,
+/* The buffers' parameters come from their list (AW_BUFFERS, aw_params.h). */
+#define AW_KERNEL_PARAM(NAME, space, type, name) , space type* name
+__kernel void aw_ensemble(ulong chunk_first, ulong chunk_end, long seg_first, long seg_end AW_BUFFERS(AW_KERNEL_PARAM),
                           __local real* scratch) {
   const aw_config cfg = {AW_FEATURES, AW_STAGES, AW_KICK_FIRST, AW_INITIAL, AW_GRADIENT};
   aw_lanes l = {chunk_first + (ulong)get_global_id(0) * AW_LANES, chunk_end, chunk_first};
   real emax = 0, esum = 0;
   if (l.first < chunk_end) {
-    aw_outputs out = {map, counters, initial_r, final_r, final_i, indicators};
-    aw_ensemble_item(cfg, l, rp, ip, out, &emax, &esum);
+    aw_outputs out = {hist, counters, rec_r, rec_i};
+    aw_ensemble_item(cfg, l, seg_first, seg_end, rp, ip, out, &emax, &esum);
   }
   aw_group_reduce(scratch, (int)get_local_id(0), (int)get_local_size(0), get_group_id(0), emax,
                   esum, group_stats);

@@ -23,17 +23,18 @@
 #define AW_CUDA_MIN_BLOCKS 4 /* H200 sweep 4/6/8: 1.915/1.889/1.911e10 and 1.944/1.896/1.901e10 */
 #endif
 #endif
+/* The buffers' parameters come from their list (AW_BUFFERS, aw_params.h). */
+#define AW_KERNEL_PARAM(NAME, space, type, name) , space type* name
 extern "C" __global__ void __launch_bounds__(AW_CUDA_MAX_BLOCK, AW_CUDA_MIN_BLOCKS)
-    aw_ensemble(aw_u64 chunk_first, aw_u64 chunk_end, const aw_rparams* rp, const aw_iparams* ip, aw_u32* map,
-                aw_u32* counters, real* initial_r, real* final_r, aw_i64* final_i, real* indicators, real* group_stats) {
+    aw_ensemble(aw_u64 chunk_first, aw_u64 chunk_end, aw_i64 seg_first, aw_i64 seg_end AW_BUFFERS(AW_KERNEL_PARAM)) {
   extern __shared__ unsigned char aw_shared[];
   real* scratch = (real*)aw_shared;
   const aw_config cfg = {AW_FEATURES, AW_STAGES, AW_KICK_FIRST, AW_INITIAL, AW_GRADIENT};
   aw_lanes l = {chunk_first + ((aw_u64)blockIdx.x * blockDim.x + threadIdx.x), chunk_end, chunk_first};
   real emax = 0, esum = 0;
   if (l.first < chunk_end) {
-    aw_outputs out = {map, counters, initial_r, final_r, final_i, indicators};
-    aw_ensemble_item(cfg, l, rp, ip, out, &emax, &esum);
+    aw_outputs out = {hist, counters, rec_r, rec_i};
+    aw_ensemble_item(cfg, l, seg_first, seg_end, rp, ip, out, &emax, &esum);
   }
   aw_group_reduce(scratch, (int)threadIdx.x, (int)blockDim.x, blockIdx.x, emax, esum, group_stats);
 }

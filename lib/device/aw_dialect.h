@@ -102,6 +102,7 @@ typedef aw_i64 lint;
 #define AW_INT_TO_LANE(x) ((lreal)(x))
 #define AW_ALL(c) (c)
 #define AW_STORE_ILANES(v, arr) ((arr)[0] = (v))
+#define AW_LOAD_ILANES(arr) ((arr)[0])
 #elif defined(AW_CPP)
 /* C++ with GCC/Clang vector extensions: + - * / and comparisons are
  * element-wise, `c ? b : a` selects per element, scalars broadcast. */
@@ -111,6 +112,7 @@ typedef aw_i64 lint __attribute__((vector_size(8 * AW_LANES)));
 #define AW_LOAD_LANES(arr) aw_load_lanes(arr)
 #define AW_STORE_LANES(v, arr) std::memcpy((arr), &(v), sizeof(lreal))
 #define AW_STORE_ILANES(v, arr) std::memcpy((arr), &(v), sizeof(lint))
+#define AW_LOAD_ILANES(arr) aw_load_ilanes(arr)
 #define AW_LANE_TO_INT(x) __builtin_convertvector((x), lint)
 #define AW_INT_TO_LANE(x) __builtin_convertvector((x), lreal)
 #define AW_ALL(c) aw_all_lanes(c)
@@ -132,6 +134,7 @@ typedef AW_CAT(long, AW_LANES) lint;
 #endif
 #define AW_ALL(c) all(c)
 #define AW_STORE_ILANES(v, arr) AW_CAT(vstore, AW_LANES)((v), 0, (arr))
+#define AW_LOAD_ILANES(arr) AW_CAT(vload, AW_LANES)(0, (arr))
 #endif
 /* a scalar broadcast to every lane (OpenCL's builtins do not mix the two) */
 #if defined(AW_CPP) && AW_LANES > 1
@@ -199,6 +202,11 @@ AW_FN bool aw_all_lanes(M m) {
 }
 AW_FN lreal aw_load_lanes(const real* a) {
   lreal v;
+  std::memcpy(&v, a, sizeof v);
+  return v;
+}
+AW_FN lint aw_load_ilanes(const aw_i64* a) {
+  lint v;
   std::memcpy(&v, a, sizeof v);
   return v;
 }

@@ -16,36 +16,68 @@
 #include "aw_initial.h"
 #include "aw_stepper.h"
 #include "effects/aw_effects.h"
+#include "effects/aw_fx_carry.h"
 
-/* On return, *emax and *esum hold the maximum and the sum of max|dE| over this
- * item's binned trajectories (zero without AW_F_ENERGY). */
-AW_FN void aw_ensemble_item(aw_config cfg, aw_lanes l, AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip,
-                            aw_outputs out, real* emax, real* esum) {
+/* One launch of the lanes' trajectories over the segments [seg_first,
+ * seg_end) of their schedule (ip->windows windows of ip->segments segments;
+ * a segment is the steps between two energy samples). A launch that starts at
+ * segment 0 makes the initial states (or reads them from the records:
+ * ensemble.initial = "file"); one that starts later continues from the carry
+ * records (effects/aw_fx_carry.h); one that ends before the last segment
+ * saves them. On return, *emax and *esum hold the maximum and the sum of
+ * max|dE| over this item's binned trajectories (zero without AW_F_ENERGY, and
+ * for a launch that does not finish its trajectories). */
+AW_FN void aw_ensemble_item(aw_config cfg, aw_lanes l, aw_i64 seg_first, aw_i64 seg_end, AW_CONSTANT aw_rparams* rp,
+                            AW_CONSTANT aw_iparams* ip, aw_outputs out, real* emax, real* esum) {
   aw_lstate s;
   aw_fx fx;
-  lreal accepted = aw_initial_state(&s, cfg.initial, l.first, rp, ip);
-  aw_fx_begin(cfg, &fx, &s, accepted, l, rp, ip, out);
+  aw_window_start ws;
+  const aw_i64 segments = ip->segments;
+  if (seg_first == 0) {
+    int given[AW_LANES];
+    lreal accepted = AW_LSPLAT(AW_R(1.0));
+    if (AW_HAS(AW_F_CARRY) && cfg.initial == AW_INITIAL_FILE)
+      aw_carry_load_state(&s, given, out, ip, l);
+    else
+      accepted = aw_initial_state(&s, cfg.initial, l.first, rp, ip);
+    aw_fx_begin(cfg, &fx, &s, accepted, l, rp, ip, out);
+    if (AW_HAS(AW_F_CARRY) && cfg.initial == AW_INITIAL_FILE)
+      for (int j = 0; j < AW_LANES; ++j) fx.status[j] = given[j]; /* a state flagged before stays flagged */
+    ws.ux = s.ux, ws.uy = s.uy, ws.uz = s.uz; /* the first window starts here */
+    ws.wx = s.wx, ws.wy = s.wy, ws.wz = s.wz;
+  } else {
+    aw_carry_load(&s, &fx, &ws, out, ip, l);
+  }
   aw_fx_first_force(cfg, &fx, &s, rp);
 
-  for (aw_i64 w = 0; w < ip->windows; ++w) {
-    lreal ux0 = s.ux, uy0 = s.uy, uz0 = s.uz;
-    lint wx0 = s.wx, wy0 = s.wy, wz0 = s.wz;
-    aw_fx_window_begin(cfg, &fx);
-    for (aw_i64 g = 0; g < ip->segments; ++g) {
-      aw_fx_segment(cfg, &fx, &s, ip->steps_per_segment, rp);
-      aw_fx_sample(cfg, &fx, &s, rp);
+  for (aw_i64 k = seg_first; k < seg_end; ++k) {
+    const aw_i64 g = k % segments;
+    if (g == 0) {
+      ws.ux = s.ux, ws.uy = s.uy, ws.uz = s.uz;
+      ws.wx = s.wx, ws.wy = s.wy, ws.wz = s.wz;
+      aw_fx_window_begin(cfg, &fx);
     }
-    /* displacement over the window, in turns: exact integer part + wrapped part */
-    lreal dx = AW_INT_TO_LANE(s.wx - wx0) + (s.ux - ux0);
-    lreal dy = AW_INT_TO_LANE(s.wy - wy0) + (s.uy - uy0);
-    lreal dz = AW_INT_TO_LANE(s.wz - wz0) + (s.uz - uz0);
-    lreal sane = AW_SELECT(AW_LSPLAT(AW_R(0.0)), AW_LSPLAT(AW_R(1.0)),
-                           AW_ISFINITE(s.ux) & AW_ISFINITE(s.uy) & AW_ISFINITE(s.uz) & AW_ISFINITE(s.px) &
-                               AW_ISFINITE(s.py) & AW_ISFINITE(s.pz));
-    aw_fx_window_end(cfg, &fx, w, dx, dy, dz, sane, l, rp, ip, out);
+    aw_fx_segment(cfg, &fx, &s, ip->steps_per_segment, rp);
+    aw_fx_sample(cfg, &fx, &s, rp);
+    if (g == segments - 1) {
+      /* displacement over the window, in turns: exact integer part + wrapped part */
+      lreal dx = AW_INT_TO_LANE(s.wx - ws.wx) + (s.ux - ws.ux);
+      lreal dy = AW_INT_TO_LANE(s.wy - ws.wy) + (s.uy - ws.uy);
+      lreal dz = AW_INT_TO_LANE(s.wz - ws.wz) + (s.uz - ws.uz);
+      lreal sane = AW_SELECT(AW_LSPLAT(AW_R(0.0)), AW_LSPLAT(AW_R(1.0)),
+                             AW_ISFINITE(s.ux) & AW_ISFINITE(s.uy) & AW_ISFINITE(s.uz) & AW_ISFINITE(s.px) &
+                                 AW_ISFINITE(s.py) & AW_ISFINITE(s.pz));
+      aw_fx_window_end(cfg, &fx, k / segments, dx, dy, dz, sane, l, rp, ip, out);
+    }
+  }
+  if (seg_end < ip->windows * segments) { /* a time slice: the next launch goes on from here */
+    if (AW_HAS(AW_F_CARRY)) aw_carry_save(&s, &fx, &ws, out, ip, l);
+    *emax = AW_R(0.0);
+    *esum = AW_R(0.0);
+    return;
   }
   if (AW_HAS(AW_F_REVERSE)) aw_reverse(cfg, &s, rp, ip);
-  aw_fx_finish(cfg, &fx, &s, l, out, emax, esum, rp);
+  aw_fx_finish(cfg, &fx, &s, l, out, emax, esum, rp, ip);
 }
 
 #endif /* AW_ENSEMBLE_H */

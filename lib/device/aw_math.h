@@ -35,6 +35,42 @@
     *(c) = AW_FROM_BITS(AW_AS_BITS(aw_cc_) ^ aw_neg_c_);                                      \
   } while (0)
 
+/* The identity: the S() of the kernels below for scalar callers. */
+#define AW_SCALAR_(x) (x)
+
+/* The kernels of aw_sincos2pi: sin(pi f / 2) = f S(w) and cos(pi f / 2) = 1 +
+ * w C(w), w = f^2, near-minimax on |f| <= 1/2 (scripts/fit_sincos.py); S(c)
+ * makes the constant c a value of the caller's type (lanes broadcast it). One
+ * macro for the lane and the scalar function: the same operations, the same
+ * bits. */
+#ifdef AW_FLOAT
+#define AW_SINCOS_POLY(S, w, ps, pc)                                                      \
+  do {                                                                                    \
+    (ps) = AW_FMA((w), S(AW_R(-4.602149212814176e-03)), S(AW_R(7.968021764775542e-02)));   \
+    (ps) = AW_FMA((w), (ps), S(AW_R(-6.459634776648118e-01)));                               \
+    (ps) = AW_FMA((w), (ps), S(AW_R(1.5707963219532366)));                                   \
+    (pc) = AW_FMA((w), S(AW_R(9.067398984032665e-04)), S(AW_R(-2.0861528342199967e-02)));  \
+    (pc) = AW_FMA((w), (pc), S(AW_R(2.536694103571085e-01)));                                \
+    (pc) = AW_FMA((w), (pc), S(AW_R(-1.2337005493742192)));                                  \
+  } while (0)
+#else
+#define AW_SINCOS_POLY(S, w, ps, pc)                                         \
+  do {                                                                       \
+    (ps) = AW_FMA((w), S(5.633933781537854e-08), S(-3.59864335298231e-06));   \
+    (ps) = AW_FMA((w), (ps), S(1.604411507421909e-04));                         \
+    (ps) = AW_FMA((w), (ps), S(-4.681754132340976e-03));                        \
+    (ps) = AW_FMA((w), (ps), S(7.969262624604301e-02));                         \
+    (ps) = AW_FMA((w), (ps), S(-6.459640975062443e-01));                        \
+    (ps) = AW_FMA((w), (ps), S(1.5707963267948966));                            \
+    (pc) = AW_FMA((w), S(-6.329396344967424e-09), S(4.710678405505227e-07));  \
+    (pc) = AW_FMA((w), (pc), S(-2.5202039028029178e-05));                       \
+    (pc) = AW_FMA((w), (pc), S(9.192602745468447e-04));                         \
+    (pc) = AW_FMA((w), (pc), S(-2.0863480763340773e-02));                       \
+    (pc) = AW_FMA((w), (pc), S(2.536695079010478e-01));                         \
+    (pc) = AW_FMA((w), (pc), S(-1.2337005501361697));                           \
+  } while (0)
+#endif
+
 /* aw_sincos2pi_n(u, n, s, c): sin and cos of 2 pi n u for n a power of two
  * (n u is exact: the multiple costs nothing beyond the reduction's own
  * products); aw_sincos2pi(u, s, c) is n = 1. */
@@ -79,27 +115,8 @@ AW_FN void aw_sincos2pi_n(lreal u, real n, lreal* s, lreal* c) {
    * factors of pi/2 live in the coefficients). 18 operations for both
    * instead of fdlibm's 25 on r, with the same worst case (1.5 ulp double,
    * 1.7 ulp float; docs/numerics.md); exact at multiples of a quarter turn. */
-#ifdef AW_FLOAT
-  lreal ps = AW_FMA(w, AW_LSPLAT(AW_R(-4.602149212814176e-03)), AW_LSPLAT(AW_R(7.968021764775542e-02)));
-  ps = AW_FMA(w, ps, AW_LSPLAT(AW_R(-6.459634776648118e-01)));
-  ps = AW_FMA(w, ps, AW_LSPLAT(AW_R(1.5707963219532366)));
-  lreal pc = AW_FMA(w, AW_LSPLAT(AW_R(9.067398984032665e-04)), AW_LSPLAT(AW_R(-2.0861528342199967e-02)));
-  pc = AW_FMA(w, pc, AW_LSPLAT(AW_R(2.536694103571085e-01)));
-  pc = AW_FMA(w, pc, AW_LSPLAT(AW_R(-1.2337005493742192)));
-#else
-  lreal ps = AW_FMA(w, AW_LSPLAT(5.633933781537854e-08), AW_LSPLAT(-3.59864335298231e-06));
-  ps = AW_FMA(w, ps, AW_LSPLAT(1.604411507421909e-04));
-  ps = AW_FMA(w, ps, AW_LSPLAT(-4.681754132340976e-03));
-  ps = AW_FMA(w, ps, AW_LSPLAT(7.969262624604301e-02));
-  ps = AW_FMA(w, ps, AW_LSPLAT(-6.459640975062443e-01));
-  ps = AW_FMA(w, ps, AW_LSPLAT(1.5707963267948966));
-  lreal pc = AW_FMA(w, AW_LSPLAT(-6.329396344967424e-09), AW_LSPLAT(4.710678405505227e-07));
-  pc = AW_FMA(w, pc, AW_LSPLAT(-2.5202039028029178e-05));
-  pc = AW_FMA(w, pc, AW_LSPLAT(9.192602745468447e-04));
-  pc = AW_FMA(w, pc, AW_LSPLAT(-2.0863480763340773e-02));
-  pc = AW_FMA(w, pc, AW_LSPLAT(2.536695079010478e-01));
-  pc = AW_FMA(w, pc, AW_LSPLAT(-1.2337005501361697));
-#endif
+  lreal ps, pc;
+  AW_SINCOS_POLY(AW_LSPLAT, w, ps, pc);
   lreal sr = f * ps;
   lreal cr = AW_FMA(w, pc, AW_LSPLAT(AW_R(1.0)));
   AW_QUADRANT_SELECT(t, sr, cr, s, c);
@@ -108,11 +125,71 @@ AW_FN void aw_sincos2pi_n(lreal u, real n, lreal* s, lreal* c) {
 
 AW_FN void aw_sincos2pi(lreal u, lreal* s, lreal* c) { aw_sincos2pi_n(u, AW_R(1.0), s, c); }
 
-/* ------------------------------------------------------------ scalar log */
+/* sin and cos of 2 pi u for one real u, whatever the lane width: the portable
+ * kernels of aw_sincos2pi_n (the same bits as it gives without
+ * AW_NATIVE_MATH), for per-trajectory scalar work such as the frequency
+ * analysis (aw_naff.h). Always portable. The quadrant q = k mod 4 comes from
+ * m = k - 4 rint(k / 4) in floating point (exact), the signs by negation. */
+AW_FN void aw_sincos2pi_1(real u, real* s, real* c) {
+  const real t = AW_FMA(AW_R(4.0), u, AW_ROUND_MAGIC);
+  const real k = t - AW_ROUND_MAGIC;
+  const real f = AW_FMA(AW_R(4.0), u, -k);
+  const real w = f * f;
+  real ps, pc;
+  AW_SINCOS_POLY(AW_SCALAR_, w, ps, pc);
+  const real sr = f * ps;
+  const real cr = AW_FMA(w, pc, AW_R(1.0));
+  const real m = k - AW_R(4.0) * AW_RINT_SMALL(AW_R(0.25) * k); /* -2, -1, 0, 1, 2 */
+  if (m == AW_R(0.0)) {
+    *s = sr;
+    *c = cr;
+  } else if (m == AW_R(1.0)) {
+    *s = cr;
+    *c = -sr;
+  } else if (m == AW_R(2.0) || m == AW_R(-2.0)) {
+    *s = -sr;
+    *c = -cr;
+  } else { /* m = -1: q = 3 */
+    *s = -cr;
+    *c = sr;
+  }
+}
+
+/* ------------------------------------------------------------ log */
+
+/* The fdlibm e_log.c kernel: log(2^k m) for m in [sqrt(1/2), sqrt(2)), k an
+ * integer-valued T; S(c) makes the constant c a T (lanes broadcast it). One
+ * sequence of operations for the scalar and the lane logarithm, so that they
+ * give the same bits. */
+#ifdef AW_FLOAT
+#define AW_LOG_LN2_HI 6.93359375e-01f
+#define AW_LOG_LN2_LO -2.12194440e-04f
+#else
+#define AW_LOG_LN2_HI 6.93147180369123816490e-01
+#define AW_LOG_LN2_LO 1.90821492927058770002e-10
+#endif
+#define AW_LOG_KERNEL(T, S, m, k, out)                                                                     \
+  do {                                                                                                     \
+    const T aw_f_ = (m) - S(AW_R(1.0));                                                                    \
+    const T aw_s_ = aw_f_ / (S(AW_R(2.0)) + aw_f_);                                                        \
+    const T aw_z_ = aw_s_ * aw_s_;                                                                         \
+    const T aw_w_ = aw_z_ * aw_z_;                                                                         \
+    const T aw_t1_ = aw_w_ * AW_FMA(aw_w_, AW_FMA(aw_w_, S(AW_R(1.531383769920937332e-01)),                \
+                                                  S(AW_R(2.222219843214978396e-01))),                      \
+                                    S(AW_R(3.999999999940941908e-01)));                                    \
+    const T aw_t2_ = aw_z_ * AW_FMA(aw_w_, AW_FMA(aw_w_, AW_FMA(aw_w_, S(AW_R(1.479819860511658591e-01)), \
+                                                                S(AW_R(1.818357216161805012e-01))),        \
+                                                  S(AW_R(2.857142874366239149e-01))),                      \
+                                    S(AW_R(6.666666666666735130e-01)));                                    \
+    const T aw_r_ = aw_t2_ + aw_t1_;                                                                       \
+    const T aw_hfsq_ = AW_R(0.5) * aw_f_ * aw_f_;                                                          \
+    (out) = (k) * AW_LOG_LN2_HI - ((aw_hfsq_ - (aw_s_ * (aw_hfsq_ + aw_r_) + (k) * AW_LOG_LN2_LO)) - aw_f_); \
+  } while (0)
 
 /* Natural logarithm of a positive finite x (fdlibm e_log.c structure:
  * x = 2^k m with m in [sqrt(1/2), sqrt(2)), log(m) from s = f / (2 + f)).
- * Used for Gaussian initial states (Box-Muller). */
+ * Used for Gaussian initial states (Box-Muller) and once per trajectory by
+ * the indicators. */
 AW_FN real aw_log(real x) {
   int e;
   real m = AW_FREXP(x, &e); /* exact: x = m 2^e, m in [1/2, 1) */
@@ -120,24 +197,39 @@ AW_FN real aw_log(real x) {
     m = AW_R(2.0) * m;
     e -= 1;
   }
-  const real f = m - AW_R(1.0);
-  const real s = f / (AW_R(2.0) + f);
-  const real z = s * s;
-  const real w = z * z;
-  const real t1 = w * AW_FMA(w, AW_FMA(w, AW_R(1.531383769920937332e-01), AW_R(2.222219843214978396e-01)),
-                             AW_R(3.999999999940941908e-01));
-  const real t2 = z * AW_FMA(w, AW_FMA(w, AW_FMA(w, AW_R(1.479819860511658591e-01), AW_R(1.818357216161805012e-01)),
-                                       AW_R(2.857142874366239149e-01)),
-                             AW_R(6.666666666666735130e-01));
-  const real r = t2 + t1;
-  const real hfsq = AW_R(0.5) * f * f;
   const real k = (real)e;
+  real out;
+  AW_LOG_KERNEL(real, AW_SCALAR_, m, k, out);
+  return out;
+}
+
+/* The same logarithm per lane, for positive normal x (the exponent is read
+ * from the bit pattern; subnormals, zero, infinities and NaN give garbage or
+ * NaN, never a trap): bitwise aw_log of each element. Integer work on the
+ * bits and the rounding sum give k without a conversion instruction. */
 #ifdef AW_FLOAT
-  const real ln2_hi = 6.93359375e-01f, ln2_lo = -2.12194440e-04f;
+#define AW_LOG_MANT_BITS 23
+#define AW_LOG_MANT_MASK AW_BITS_C(0x007FFFFF)
+#define AW_LOG_ONE_BITS AW_BITS_C(0x3F800000)
+#define AW_LOG_BIAS AW_R(127.0)
 #else
-  const real ln2_hi = 6.93147180369123816490e-01, ln2_lo = 1.90821492927058770002e-10;
+#define AW_LOG_MANT_BITS 52
+#define AW_LOG_MANT_MASK AW_BITS_C(0x000FFFFFFFFFFFFF)
+#define AW_LOG_ONE_BITS AW_BITS_C(0x3FF0000000000000)
+#define AW_LOG_BIAS AW_R(1023.0)
 #endif
-  return k * ln2_hi - ((hfsq - (s * (hfsq + r) + k * ln2_lo)) - f);
+AW_FN lreal aw_log_lanes(lreal x) {
+  const lbits b = AW_AS_BITS(x);
+  lreal m = AW_FROM_BITS((b & AW_LOG_MANT_MASK) | AW_LOG_ONE_BITS); /* [1, 2): x = 2^(E) m */
+  /* E + bias is the exponent field (x > 0: no sign bit); added to the bits of
+   * the rounding constant it is read as a real exactly */
+  lreal k = (AW_FROM_BITS(AW_ROUND_MAGIC_BITS + (b >> AW_LOG_MANT_BITS)) - AW_ROUND_MAGIC) - AW_LOG_BIAS;
+  /* aw_log's m (in [1/2, 1)) is m / 2 here: m / 2 < sqrt(1/2) is m < sqrt(2) */
+  k = AW_SELECT(k + AW_R(1.0), k, m < AW_R(1.41421356237309504880));
+  m = AW_SELECT(m * AW_R(0.5), m, m < AW_R(1.41421356237309504880)); /* after k: the test reads the old m */
+  lreal out;
+  AW_LOG_KERNEL(lreal, AW_LSPLAT, m, k, out);
+  return out;
 }
 
 /* ------------------------------------------------------------ scalar atan2 */

@@ -90,6 +90,9 @@ typedef struct {
   aw_i64 grid_kind;         /* AW_GRID_* */
   aw_i64 grid_n[2];         /* healpix: nside, 0; lonlat: n_lon, n_lat; plane: n1, n2 */
   aw_i64 grid_axes[3];      /* plane: the two gridded momenta, then the fixed one */
+  /* the records (aw_params.h): columns per trajectory, and where each slot's columns start */
+  aw_i64 rec_reals, rec_ints;
+  aw_i64 rec_col_r[AW_OUT_SLOTS], rec_col_i[AW_OUT_SLOTS];
 } aw_iparams;
 
 #endif /* AW_PARAM_BLOCKS_H */

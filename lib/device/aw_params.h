@@ -29,7 +29,11 @@
 #define AW_F_FLI 0x800u           /* fast Lyapunov indicator: max_t log |w| */
 #define AW_F_MEGNO 0x1000u        /* mean MEGNO <Y> and the Lyapunov exponent from its slope */
 #define AW_F_LYAPUNOV 0x2000u     /* finite-time maximal Lyapunov exponent log |w(t)| / t */
-#define AW_F_ALL 0x3fffu
+/* open runs (docs/scenes.md, "Open runs"): a launch may start trajectories
+ * from states given in their records (ensemble.initial = "file") and stop
+ * them at a time slice, leaving in their records all it needs to go on */
+#define AW_F_CARRY 0x4000u
+#define AW_F_ALL 0x7fffu
 
 /* ------------------------------------------------ initial distributions
  * X is uniform on the accessible part of the torus in every case. */
@@ -38,6 +42,7 @@
 #define AW_INITIAL_BOX 2      /* direction uniform in a longitude/latitude box */
 #define AW_INITIAL_GAUSSIAN 3 /* p_x, p_y Gaussian, p_z from the energy, random sign */
 #define AW_INITIAL_GRID 4     /* trajectory i = point i of a grid (aw_grid.h), X fixed */
+#define AW_INITIAL_FILE 5     /* trajectory i = the state in its carry record (AW_OUT_CARRY) */
 #define AW_GRID_HEALPIX 0     /* momentum directions: HEALPix pixel centres, RING order */
 #define AW_GRID_LONLAT 1      /* momentum directions: n_lon x n_lat cell centres of a lon/lat box */
 #define AW_GRID_PLANE 2       /* two momenta on an n1 x n2 grid, the third fixed */
@@ -68,9 +73,20 @@
 #define AW_EHIST_BINS ((AW_EHIST_MAX_EXP - AW_EHIST_MIN_EXP) * AW_EHIST_BINS_PER_OCTAVE + 2)
 #define AW_C_COUNT (AW_C_EHIST + AW_EHIST_BINS)
 
-/* ------------------------------------------------------- state records
- * Per trajectory, when states are asked for: 6 reals (u_x, u_y, u_z in turns,
- * wrapped; p_x, p_y, p_z) and 4 integers (winding x, y, z; status). */
+/* ------------------------------------------------------- records
+ * What a trajectory writes for the host: each per-trajectory output of the
+ * host's output table (lib/src/plan/output_table.cpp) owns a slot and its
+ * columns in the trajectory's record of reals and record of integers; the
+ * host lays the columns out (aw_iparams.rec_col_r, rec_col_i) for the
+ * outputs a plan asks for, and a kernel writes only those. */
+#define AW_OUT_INITIAL_STATE 0 /* AW_STATE_REALS reals */
+#define AW_OUT_FINAL_STATE 1   /* AW_STATE_REALS reals, AW_STATE_INTS integers */
+#define AW_OUT_INDICATORS 2    /* AW_IND_REALS reals */
+#define AW_OUT_CARRY 3         /* AW_CARRY_REALS reals, AW_CARRY_INTS integers: in and out */
+#define AW_OUT_SLOTS 8
+
+/* A state: 6 reals (u_x, u_y, u_z in turns, wrapped; p_x, p_y, p_z) and 4
+ * integers (winding x, y, z; status). */
 #define AW_STATE_REALS 6
 #define AW_STATE_INTS 4
 #define AW_STATUS_OK 0
@@ -79,15 +95,53 @@
 #define AW_STATUS_INITIAL 3
 #define AW_STATUS_LEFT_REGION 4
 
-/* ------------------------------------------------------- indicator records
- * Per trajectory, when an indicator is asked for (NaN for a flagged one):
- * FLI, mean MEGNO <Y>, the Lyapunov exponent from MEGNO's slope (1/T), the
- * finite-time Lyapunov exponent (1/T). */
+/* The carry of a trajectory (AW_F_CARRY): its state and every effect's state
+ * between two launches, read where a launch does not start the trajectory
+ * (a later time slice, or ensemble.initial = "file": the state only) and
+ * written where it does not finish it.
+ *   reals: u_x u_y u_z (turns) p_x p_y p_z | E(0) max|dE| over-limit inside
+ *          | the window's start u_x u_y u_z | the tangent vector
+ *          q_x q_y q_z p_x p_y p_z and its observers log2w max_n2 s1 ysum mean_y cov prev_n2
+ *   ints:  winding x y z, status | the window's start windings x y z | tangent steps */
+#define AW_CARRY_REALS 26
+#define AW_CARRY_INTS 8
+#define AW_CARRY_ENERGY 6
+#define AW_CARRY_WINDOW 10
+#define AW_CARRY_TANGENT 13
+
+/* The chaos indicators of a trajectory (NaN for a flagged one): FLI, mean
+ * MEGNO <Y>, the Lyapunov exponent from MEGNO's slope (1/T), the finite-time
+ * Lyapunov exponent (1/T). */
 #define AW_IND_REALS 4
 #define AW_IND_FLI 0
 #define AW_IND_MEGNO 1
 #define AW_IND_MEGNO_LYAPUNOV 2
 #define AW_IND_LYAPUNOV 3
+
+/* ------------------------------------------------------- kernel buffers
+ * The ensemble kernel's buffers in argument order, written once: the OpenCL
+ * and CUDA entry points declare their parameters from this list, the host's
+ * EnsembleBuffers is an array indexed by AW_BUF_<NAME>, and every backend
+ * passes them in this order. Whatever outputs a scene asks for, they go into
+ * these arenas (the output table says what lies where):
+ *   rp, ip       the parameter blocks (aw_param_blocks.h)
+ *   hist         32-bit counts of the chunk: F velocity maps, then the zoom
+ *   counters     AW_C_COUNT 32-bit counters of the chunk
+ *   rec_r, rec_i per trajectory of the chunk, ip->rec_reals reals and
+ *                ip->rec_ints integers (the records)
+ *   group_stats  per work-group, AW_GROUP_STATS reals
+ * X(NAME, address space, element type, parameter name) */
+#define AW_BUFFERS(X)                      \
+  X(RPARAMS, AW_CONSTANT, aw_rparams, rp)  \
+  X(IPARAMS, AW_CONSTANT, aw_iparams, ip)  \
+  X(HIST, AW_GLOBAL, aw_u32, hist)         \
+  X(COUNTERS, AW_GLOBAL, aw_u32, counters) \
+  X(RECORDS_R, AW_GLOBAL, real, rec_r)     \
+  X(RECORDS_I, AW_GLOBAL, aw_i64, rec_i)   \
+  X(GROUP_STATS, AW_GLOBAL, real, group_stats)
+#define AW_BUF_ENUM(NAME, space, type, name) AW_BUF_##NAME,
+enum { AW_BUFFERS(AW_BUF_ENUM) AW_BUF_COUNT };
+#undef AW_BUF_ENUM
 
 /* Energy statistics: every work-group writes (max, sum) of max|dE| over its
  * binned trajectories; the host reduces the groups in index order. */

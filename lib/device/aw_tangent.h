@@ -22,9 +22,10 @@
  *     overflows, in float or double, over any run length; log|w| = log2w ln 2 +
  *     log|w_stored| is what the indicators use.
  *   FLI: the largest n2 since the start, in the current scale.
- *   MEGNO (Cincotta & Simo 2000, in the discrete form of a map, as REBOUND
- *     accumulates it): after step k (t_k = k h), rho_k = h (w . w') / |w|^2
- *     with w' = (A dP, -Hess dX) the tangent flow at the synchronised state;
+ *   MEGNO (Cincotta & Simo 2000, in the discrete form of a map): after step
+ *     k (t_k = k h), rho_k = log(|w_k| / |w_{k-1}|), the exact growth over
+ *     the step from the ratio of the synchronised norms (issue 26: the rate
+ *     h (w . w') / |w|^2 of the flow at the step's end was low by O(h));
  *     S_k = sum_j j rho_j, Y_k = 2 S_k / k, and the mean <Y>_k = (1/k) sum Y_j.
  *     The slope of Y_j against j (running mean and covariance, Welford) gives
  *     the Lyapunov exponent lambda = slope / h (Y ~ lambda t on chaotic orbits,
@@ -46,6 +47,7 @@ typedef struct {
   lreal hess[6];     /* Hessian of V at the state's position: xx yy zz xy xz yz */
   lreal log2w;       /* whole powers of two taken out of w by renormalisation */
   lreal max_n2;      /* FLI: the largest |w|^2 so far, in the current scale */
+  lreal prev_n2;     /* MEGNO: |w|^2 after the previous step, in the current scale */
   lreal s1, ysum;    /* MEGNO: sum_j j rho_j, sum_j Y_j */
   lreal mean_y, cov; /* MEGNO: running mean of Y_j and sum of (j - mean j)(Y_j - mean Y) */
   aw_i64 steps;      /* steps taken (the same in every lane) */
@@ -64,6 +66,7 @@ AW_FN void aw_tangent_begin(aw_tangent* t, AW_CONSTANT aw_rparams* rp) {
   t->log2w = AW_LSPLAT(AW_R(0.0));
   t->max_n2 = AW_FMA(t->pz, t->pz, AW_FMA(t->py, t->py, AW_FMA(t->px, t->px,
                      AW_FMA(t->qz, t->qz, AW_FMA(t->qy, t->qy, t->qx * t->qx)))));
+  t->prev_n2 = t->max_n2;
   t->s1 = AW_LSPLAT(AW_R(0.0));
   t->ysum = AW_LSPLAT(AW_R(0.0));
   t->mean_y = AW_LSPLAT(AW_R(0.0));
@@ -102,23 +105,16 @@ AW_FN void aw_tangent_drift(aw_tangent* t, real d, AW_CONSTANT aw_rparams* rp) {
   t->qz = AW_FMA(AW_LSPLAT(dr * a[2]), t->pz, t->qz);
 }
 
-/* After a step, with (dX, sx, sy, sz) the synchronised w and (gx, gy, gz) =
- * Hess dX at the state's position: the observers, then renormalisation of the
- * stored w (whose dP may hold a merged kick already). */
-AW_FN void aw_tangent_observe(aw_config cfg, aw_tangent* t, lreal sx, lreal sy, lreal sz, lreal gx, lreal gy,
-                              lreal gz, AW_CONSTANT aw_rparams* rp) {
+/* After a step, with (dX, sx, sy, sz) the synchronised w: the observers, then
+ * renormalisation of the stored w (whose dP may hold a merged kick already). */
+AW_FN void aw_tangent_observe(aw_config cfg, aw_tangent* t, lreal sx, lreal sy, lreal sz) {
   t->steps += 1;
   lreal n2 = AW_FMA(sz, sz, AW_FMA(sy, sy, AW_FMA(sx, sx, AW_FMA(t->qz, t->qz, AW_FMA(t->qy, t->qy, t->qx * t->qx)))));
   if (AW_HAS(AW_F_FLI)) t->max_n2 = AW_SELECT(t->max_n2, n2, n2 > t->max_n2);
   if (AW_HAS(AW_F_MEGNO)) {
-    real a[3];
-    aw_model_kinetic_diag(rp, a);
-    /* w . w' = dX . (A dP) - dP . (Hess dX), per unit of time */
-    lreal wdw = AW_FMA(AW_LSPLAT(a[2]) * t->qz, sz, AW_FMA(AW_LSPLAT(a[1]) * t->qy, sy, (AW_LSPLAT(a[0]) * t->qx) * sx));
-    wdw = wdw - AW_FMA(sz, gz, AW_FMA(sy, gy, sx * gx));
-    const real h = AW_TWO_PI_R * rp->tangent_step; /* the step in time units */
     const real k = (real)t->steps;
-    lreal rho = (AW_LSPLAT(h) * wdw) / n2;
+    /* log(|w_k| / |w_{k-1}|): both norms in the current scale */
+    lreal rho = AW_R(0.5) * aw_log_lanes(n2 / t->prev_n2);
     t->s1 = AW_FMA(AW_LSPLAT(k), rho, t->s1);
     lreal y = (AW_R(2.0) * t->s1) / k;
     t->ysum = t->ysum + y;
@@ -136,13 +132,14 @@ AW_FN void aw_tangent_observe(aw_config cfg, aw_tangent* t, lreal sx, lreal sy, 
   t->py = t->py * scale;
   t->pz = t->pz * scale;
   t->max_n2 = t->max_n2 * (scale * scale);
+  t->prev_n2 = n2 * (scale * scale);
   t->log2w = t->log2w + AW_SELECT(AW_LSPLAT(AW_R(0.0)), AW_LSPLAT(AW_R(32.0)), n2 > AW_RENORM_ABOVE);
 }
 
 /* The step's last kick k_last for the state (k_last may be the merged kick),
  * with the observers seeing w synchronised by k_sync (the step's own last
  * kick). */
-AW_FN void aw_tangent_last_kick(aw_config cfg, aw_tangent* t, real k_sync, real k_last, AW_CONSTANT aw_rparams* rp) {
+AW_FN void aw_tangent_last_kick(aw_config cfg, aw_tangent* t, real k_sync, real k_last) {
   lreal gx, gy, gz;
   aw_tangent_hdx(t, &gx, &gy, &gz);
   lreal ms = AW_LSPLAT(-k_sync);
@@ -151,12 +148,11 @@ AW_FN void aw_tangent_last_kick(aw_config cfg, aw_tangent* t, real k_sync, real 
   t->px = AW_FMA(ml, gx, t->px);
   t->py = AW_FMA(ml, gy, t->py);
   t->pz = AW_FMA(ml, gz, t->pz);
-  aw_tangent_observe(cfg, t, sx, sy, sz, gx, gy, gz, rp);
+  aw_tangent_observe(cfg, t, sx, sy, sz);
 }
 
 /* aw_segment with the tangent vector: the same state operations in the same
- * order. Drift-first methods evaluate the Hessian at the end of every step
- * when MEGNO is asked for (w' needs it), one more force evaluation a step. */
+ * order. */
 AW_FN void aw_segment_tangent(aw_config cfg, aw_lstate* s, aw_tangent* t, aw_i64 nsteps, AW_CONSTANT aw_rparams* rp) {
   const int stages = cfg.stages;
   if (cfg.kick_first) {
@@ -176,10 +172,9 @@ AW_FN void aw_segment_tangent(aw_config cfg, aw_lstate* s, aw_tangent* t, aw_i64
       aw_tangent_force(s, t, rp);
       const real k_last = (n + 1 < nsteps) ? rp->kick_merged : rp->kick[stages];
       aw_kick(s, k_last);
-      aw_tangent_last_kick(cfg, t, rp->kick[stages], k_last, rp);
+      aw_tangent_last_kick(cfg, t, rp->kick[stages], k_last);
     }
   } else {
-    const int megno = AW_HAS(AW_F_MEGNO);
     for (aw_i64 n = 0; n < nsteps; ++n) {
       for (int i = 0; i < stages; ++i) {
         aw_model_drift(s, rp->drift[i], rp);
@@ -191,12 +186,9 @@ AW_FN void aw_segment_tangent(aw_config cfg, aw_lstate* s, aw_tangent* t, aw_i64
       aw_model_drift(s, rp->drift[stages], rp);
       aw_tangent_drift(t, rp->drift[stages], rp);
       aw_wrap(s);
-      if (megno) aw_tangent_force(s, t, rp);
-      lreal gx, gy, gz;
-      aw_tangent_hdx(t, &gx, &gy, &gz);
-      aw_tangent_observe(cfg, t, t->px, t->py, t->pz, gx, gy, gz, rp);
+      aw_tangent_observe(cfg, t, t->px, t->py, t->pz);
     }
-    if (!megno || nsteps == 0) aw_tangent_force(s, t, rp);
+    aw_tangent_force(s, t, rp);
   }
 }
 

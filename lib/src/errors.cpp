@@ -35,6 +35,14 @@ BuildError::BuildError(std::string device, std::string options, std::string log)
       options_(std::move(options)),
       log_(std::move(log)) {}
 
+StateError::StateError(std::string source, std::string dataset, std::int64_t row, std::string message)
+    : Error(source + ": " + (dataset.empty() ? std::string() : dataset + (row >= 0 ? ", " : ": ")) +
+            (row >= 0 ? "row " + std::to_string(row) + ": " : std::string()) + message),
+      source_(std::move(source)),
+      dataset_(std::move(dataset)),
+      message_(std::move(message)),
+      row_(row) {}
+
 OutputError::OutputError(std::string path, std::string message)
     : Error((path.empty() ? std::string() : path + ": ") + message), path_(std::move(path)) {}
 

@@ -12,19 +12,22 @@ compute on its devices (cpu, OpenCL, CUDA) and return numpy arrays.
 
 See docs/python.md.
 """
-from __future__ import annotations
-
+# (no `from __future__ import annotations` here: it would put the name
+# "annotations" into the package's namespace)
 from . import _arnoldweb as _core
-from ._errors import BuildError, DeviceError, Error, OutputError, OutputRefused, SceneError
+from ._errors import BuildError, DeviceError, Error, OutputError, OutputRefused, PlanWarning, SceneError, StateError
 from ._result import COUNTER_NAMES, INDICATOR_NAMES, Result
-from ._run import accuracy, run
+from ._run import accuracy, check_states, run
+from ._saved import load
 from ._scene import Scene
+from ._scenes import scene, scenes
 
 __version__: str = _core.__version__
 
-__all__ = ["Scene", "Result", "run", "accuracy", "devices", "methods", "scene_keys", "backend_problems",
-           "default_device", "pixel_directions", "resonances", "compare_maps", "Error", "SceneError", "DeviceError", "BuildError", "OutputError",
-           "OutputRefused", "COUNTER_NAMES", "INDICATOR_NAMES", "__version__"]
+__all__ = ["Scene", "Result", "run", "load", "scene", "scenes", "accuracy", "check_states", "devices", "methods",
+           "scene_keys", "backend_problems", "default_device", "pixel_directions", "resonances", "compare_maps", "Error",
+           "SceneError", "DeviceError", "BuildError", "OutputError", "OutputRefused", "PlanWarning", "StateError",
+           "COUNTER_NAMES", "INDICATOR_NAMES", "__version__"]
 
 
 def devices() -> list:

@@ -4,7 +4,28 @@ Every message is the library's, word for word: the CLI prints the same text.
 """
 from __future__ import annotations
 
-__all__ = ["Error", "SceneError", "DeviceError", "BuildError", "OutputError", "OutputRefused"]
+import re
+
+__all__ = ["Error", "SceneError", "DeviceError", "BuildError", "OutputError", "OutputRefused", "PlanWarning", "StateError"]
+
+
+class PlanWarning(UserWarning):
+    """A plan that will run but cost accuracy or time (e.g. a step close to the stability
+    limit), issued through :mod:`warnings` by :func:`arnoldweb.run` (the CLI prints the
+    same text); ``warnings.simplefilter("error", arnoldweb.PlanWarning)`` turns them into errors."""
+
+
+# The library's output messages name the CLI's options; from Python they are run()'s and
+# write()'s arguments.
+_PYTHON_WORDS = ((re.compile(r"--force\b"), "force=True"), (re.compile(r"another --out\b"), "another out="),
+                 (re.compile(r"--out\b"), "out="))
+
+
+def python_words(message: str) -> str:
+    """An output message with the CLI's options named as Python arguments (force=True, out=)."""
+    for pattern, words in _PYTHON_WORDS:
+        message = pattern.sub(words, message)
+    return message
 
 
 class Error(RuntimeError):
@@ -62,7 +83,7 @@ class OutputError(Error, OSError):
     disk full): ``path`` names it."""
 
     def __init__(self, message: str, path: str = ""):
-        Error.__init__(self, message)
+        Error.__init__(self, python_words(message))
         self.path = path
 
     def __str__(self) -> str:
@@ -73,3 +94,21 @@ class OutputRefused(OutputError):
     """An output place arnoldweb refuses whatever the options: it would replace
     something arnoldweb did not write (the current directory, a directory holding
     the scene or other files)."""
+
+
+class StateError(Error, ValueError):
+    """Initial states that cannot be used (a state file, or ``initial=(X, P)``): a shape, a
+    type, a value that is not finite or out of range, or a state whose energy is far from
+    model.energy (docs/outputs.md, "State files").
+
+    Attributes: ``source`` (the file, or "initial" for arrays), ``dataset`` (the HDF5 dataset or
+    the array, "X" or "P"; "" if none), ``row`` (the state, counted from 0; -1 if none),
+    ``reason`` (the message without the place).
+    """
+
+    def __init__(self, message: str, source: str = "", dataset: str = "", row: int = -1, reason: str = ""):
+        super().__init__(message)
+        self.source = source
+        self.dataset = dataset
+        self.row = row
+        self.reason = reason or message

@@ -20,23 +20,42 @@ INDICATOR_NAMES = ("fli", "megno", "megno_lyapunov", "lyapunov")
 _INDICATOR_DTYPE = np.dtype([(n, np.float64) for n in INDICATOR_NAMES])
 
 
+class Lazy:
+    """A value read when first asked for (a loaded result's states.h5, indicators.h5)."""
+
+    def __init__(self, make):
+        self.make = make
+
+
+#: What a Result keeps when it is pickled, copied or loaded (arnoldweb.load): its public
+#: values, so that a pickle does not depend on the library's internal arrays.
+SAVED_FIELDS = ("map", "nside", "frames", "zoom", "states", "indicators", "counters", "energy", "interrupted",
+                "digests", "device", "wall_seconds", "rate", "summary", "name", "title")
+
+
 class Result:
     """One run of a scene (the main run; its panels are in :attr:`panels`).
 
     Arrays are read-only numpy views of the library's own memory where it holds
     them contiguously (map, zoom, states): no copy is made, and each keeps the
-    run alive.
+    run alive. A Result pickles and deep-copies (its arrays bit for bit), and
+    :func:`arnoldweb.load` makes one from a run's output directory.
     """
 
-    def __init__(self, record: Any, part: int = 0):
+    def __init__(self, record: Any, part: int = 0, saved: Optional[dict] = None):
         self._record = record
         self._part = part
-        self._cache: Dict[str, Any] = {}
+        # a pickled, copied or loaded result: {"parts": [values of SAVED_FIELDS], "files", "written_dir"}
+        self._saved = saved
+        self._cache: Dict[str, Any] = dict(saved["parts"][part]) if saved is not None else {}
 
     def _cached(self, name: str, make):
         if name not in self._cache:
             self._cache[name] = make()
-        return self._cache[name]
+        value = self._cache[name]
+        if isinstance(value, Lazy):  # a loaded result's file, read when first asked for
+            value = self._cache[name] = _read_only(value.make())
+        return value
 
     # ------------------------------------------------------------------ maps
     @property
@@ -49,7 +68,7 @@ class Result:
     @property
     def nside(self) -> int:
         """HEALPix nside of :attr:`map` (0 without a map)."""
-        return self._record.nside(self._part)
+        return self._cached("nside", lambda: self._record.nside(self._part))
 
     @property
     def ordering(self) -> str:
@@ -79,12 +98,12 @@ class Result:
 
     def _make_states(self) -> Optional[dict]:
         out = {}
-        init = self._record.initial_states(self._part)
+        init = self._record.records(self._part, "initial_states", False)
         if init is not None:
             out["initial"] = {"position_turns": init[:, 0:3], "momentum": init[:, 3:6]}
-        fin = self._record.final_states(self._part)
+        fin = self._record.records(self._part, "final_states", False)
         if fin is not None:
-            ints = self._record.final_ints(self._part)
+            ints = self._record.records(self._part, "final_states", True)
             out["final"] = {
                 "position_turns": fin[:, 0:3],
                 "winding": ints[:, 0:3],
@@ -93,6 +112,13 @@ class Result:
                 "position": 2 * np.pi * (ints[:, 0:3].astype(np.float64) + fin[:, 0:3]),
             }
         return out or None
+
+    @property
+    def outputs(self) -> Dict[str, Dict[str, np.ndarray]]:
+        """Every per-trajectory output of the run as its files hold it (docs/outputs.md, the
+        output table): ``{output: {dataset: array}}``, e.g. ``result.outputs["final_states"]["momentum"]``
+        (shape (n, 3)) or ``result.outputs["indicators"]["fli"]`` (the grid's shape). Copies."""
+        return self._cached("outputs", lambda: self._record.output_datasets(self._part))
 
     # --------------------------------------------------------------- numbers
     @property
@@ -115,7 +141,7 @@ class Result:
         return self._cached("indicators", self._make_indicators)
 
     def _make_indicators(self) -> Optional[np.ndarray]:
-        records = self._record.indicators(self._part)
+        records = self._record.records(self._part, "indicators", False)
         if records is None:
             return None
         layout = self._record.indicator_layout(self._part)
@@ -146,34 +172,36 @@ class Result:
     @property
     def interrupted(self) -> bool:
         """True when a stop (Ctrl-C, an exception in the progress callback) ended the run early."""
-        return self._record.interrupted_part(self._part)
+        return self._cached("interrupted", lambda: self._record.interrupted_part(self._part))
 
     @property
     def digests(self) -> dict:
         """XXH3-128 digests of the map and the states (as in summary.json): identical bits give
         identical digests on every device."""
-        return self._record.digests(self._part)
+        return self._cached("digests", lambda: self._record.digests(self._part))
 
     @property
     def device(self) -> dict:
         """The device it ran on: id, backend, name, vendor, version."""
-        return self._record.device(self._part)
+        return self._cached("device", lambda: self._record.device(self._part))
 
     @property
     def wall_seconds(self) -> float:
         """Wall time of the run."""
-        return self._record.wall_seconds(self._part)
+        return self._cached("wall_seconds", lambda: self._record.wall_seconds(self._part))
 
     @property
     def rate(self) -> float:
         """Trajectory-steps per second."""
-        return self._record.rate(self._part)
+        return self._cached("rate", lambda: self._record.rate(self._part))
 
     @property
     def summary(self) -> dict:
         """The run's summary.json as a dict: the library's own summary (same function as the
         CLI's). Once :meth:`write` (or run(out=...)) has written the outputs, it is the
         summary.json written there, file list included; before, its ``files`` list is empty."""
+        if self._saved is not None:
+            return self._cache["summary"]
         written = self._record.written_dir
         if written:  # read back as render and compare read it: checked (OutputError if damaged)
             return _core.read_saved_summary(os.path.join(written, self.subdir) if self.subdir else written)
@@ -183,12 +211,12 @@ class Result:
     @property
     def name(self) -> str:
         """"" for the main run, else the panel's name."""
-        return self._record.name(self._part)
+        return self._cached("name", lambda: self._record.name(self._part))
 
     @property
     def title(self) -> str:
         """The panel's caption ("" for the main run)."""
-        return self._record.title(self._part)
+        return self._cached("title", lambda: self._record.title(self._part))
 
     @property
     def subdir(self) -> str:
@@ -200,11 +228,15 @@ class Result:
         """The results of the scene's [[panel]] runs, by name (those that ran)."""
         if self._part != 0:
             return {}
+        if self._saved is not None:
+            return {p["name"]: Result(None, k, self._saved) for k, p in enumerate(self._saved["parts"]) if k > 0}
         return {self._record.name(k): Result(self._record, k) for k in range(1, self._record.parts_run)}
 
     @property
     def files(self) -> List[str]:
         """The paths the last write wrote ([] before)."""
+        if self._saved is not None:
+            return list(self._saved["files"])
         return list(self._record.files)
 
     # ---------------------------------------------------------------- output
@@ -216,10 +248,52 @@ class Result:
         refused always (OutputRefused) if it is not arnoldweb's. Returns the paths written."""
         if self._part != 0:
             raise ValueError("write() writes the whole job: call it on the main result")
+        if self._saved is not None:
+            from ._errors import OutputError
+            where = self._saved.get("written_dir") or ""
+            raise OutputError("this Result was loaded, unpickled or copied: its values are here, but write() needs "
+                              "the run itself" + (f"; its outputs are in {where}" if where else ""), path=os.fspath(out))
         return self._record.write(os.fspath(out), force, self._record.scene_file())
+
+    # ------------------------------------------------------------ persistence
+    def _values(self) -> dict:
+        return {name: getattr(self, name) for name in SAVED_FIELDS}
+
+    def _state(self) -> dict:
+        """This result (and, for the main run, its panels) as plain values and numpy arrays."""
+        parts = [self._values()] + [p._values() for p in self.panels.values()]
+        written = self._saved.get("written_dir", "") if self._saved is not None else self._record.written_dir
+        return {"parts": parts, "files": self.files, "written_dir": written}
+
+    def __reduce__(self):
+        return (_restore, (self._state(),))
+
+    def __copy__(self) -> "Result":
+        return self
+
+    def __deepcopy__(self, memo: dict) -> "Result":
+        import copy
+        return _restore(copy.deepcopy(self._state(), memo))
 
     def __repr__(self) -> str:
         what = f"panel {self.name!r}" if self._part else "run"
         stop = ", interrupted" if self.interrupted else ""
         return (f"<arnoldweb.Result {what}: {self.completed}/{self.trajectories} trajectories, "
                 f"{self.binned} binned, nside {self.nside}{stop}>")
+
+
+def _read_only(value: Any) -> Any:
+    """The arrays of a saved result, read-only like a run's own (in place; returns value)."""
+    if isinstance(value, np.ndarray):
+        value.flags.writeable = False
+    elif isinstance(value, dict):
+        for v in value.values():
+            _read_only(v)
+    return value
+
+
+def _restore(state: dict) -> Result:
+    """A pickled or copied Result (and its panels) from its values."""
+    for part in state["parts"]:
+        _read_only(part)
+    return Result(None, 0, state)

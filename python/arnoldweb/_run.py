@@ -4,12 +4,14 @@ from __future__ import annotations
 import os
 from typing import Callable, Optional, Sequence, Union
 
+import numpy as np
+
 from . import _arnoldweb as _core
 from ._progress import make_progress
 from ._result import Result
 from ._scene import Scene
 
-__all__ = ["run", "accuracy"]
+__all__ = ["run", "accuracy", "check_states"]
 
 SceneLike = Union[Scene, str, "os.PathLike[str]"]
 
@@ -24,10 +26,18 @@ def _scene_of(scene: SceneLike) -> Scene:
 
 def run(scene: SceneLike, device: Optional[str] = None,
         progress: "bool | Callable[[int, int, float], None] | None" = None,
-        out: "str | os.PathLike[str] | None" = None, force: bool = False) -> Result:
+        out: "str | os.PathLike[str] | None" = None, force: bool = False,
+        initial: "tuple | None" = None, units: str = "radians") -> Result:
     """Runs a scene (and its [[panel]] runs) and returns the main run's :class:`Result`.
 
-    - ``device``: "cpu", "opencl:N", "cuda:N" or "auto" (as ``--device``); None: run.device.
+    - ``device``: "cpu", "opencl:N", "cuda:N", "auto", "all" (every GPU) or a list such as
+      "cuda:0,cuda:1" (one thread per device, the same bits as one device), as ``--device``;
+      None: run.device.
+    - ``initial``: the initial states as ``(X, P)``, two arrays of shape (N, 3): positions in
+      ``units`` ("radians" or "turns"; unwrapped is fine) and momenta. They are checked as a
+      state file is (:func:`check_states`: StateError naming the row), and the trajectories start
+      from them (``ensemble.initial`` becomes "file", one trajectory per state; each state keeps
+      its own energy).
     - ``progress``: True for a bar (tqdm when installed, else lines on stderr), or a
       callable ``progress(done, total, seconds)`` called after every chunk; None: quiet.
     - ``out``: an output directory to write as ``arnoldweb run --out`` does (checked before
@@ -37,11 +47,14 @@ def run(scene: SceneLike, device: Optional[str] = None,
     The GIL is released while the device computes. Ctrl-C (SIGINT) stops the run after the
     current chunk and raises KeyboardInterrupt whose ``result`` attribute holds what was
     computed (and, with ``out``, was written); an exception raised by the progress callback
-    stops it the same way. Raises SceneError, DeviceError, BuildError, OutputError.
+    stops it the same way. Raises SceneError, DeviceError, BuildError, OutputError, StateError.
     """
     s = _scene_of(scene)
     if device is not None:
         s._apply(f"run.device={device}", f"device={device!r}")
+    x = p = None
+    if initial is not None:
+        x, p = (np.ascontiguousarray(a, dtype=np.float64) for a in _pair(initial))
     if out is not None:
         out = os.fspath(out)
         if out == "":
@@ -50,7 +63,7 @@ def run(scene: SceneLike, device: Optional[str] = None,
         s._apply(f"output.dir={_quote(out)}", f"out={out!r}")
     callback, close = make_progress(progress)
     try:
-        record = _core._run(s._scene, callback, out is not None, force)
+        record = _core._run(s._scene, callback, out is not None, force, x, p, units)
     finally:
         close()
     result = Result(record)
@@ -64,6 +77,24 @@ def run(scene: SceneLike, device: Optional[str] = None,
         stop.result = result
         raise stop
     return result
+
+
+def _pair(initial) -> tuple:
+    if not isinstance(initial, (tuple, list)) or len(initial) != 2:
+        raise TypeError("initial must be a pair (X, P) of arrays of shape (N, 3)")
+    return initial[0], initial[1]
+
+
+def check_states(scene: SceneLike, positions, momenta, units: str = "radians") -> dict:
+    """Checks initial states given as arrays against the scene's model, with the rules of a
+    state file (docs/outputs.md, "State files"): ``positions`` and ``momenta`` of shape (N, 3)
+    (anything numpy converts to float64), positions in ``units`` ("radians" or "turns"), every
+    value finite, positions within 2^52 turns, and each state's energy H = T(P) + V(X) within 1%
+    of max(|E|, max V - min V) of model.energy. Returns a dict: count, energy (H of each state,
+    a numpy array), energy_min, energy_max. Raises StateError naming the array and the row."""
+    x = np.ascontiguousarray(positions, dtype=np.float64)
+    p = np.ascontiguousarray(momenta, dtype=np.float64)
+    return _core._check_states(_scene_of(scene)._scene, x, p, units)
 
 
 def _quote(text: str) -> str:

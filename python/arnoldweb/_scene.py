@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 import os
-from typing import Any, Mapping, Sequence
+from typing import Any, Iterator, List, Mapping, Sequence
 
 from . import _arnoldweb as _core
 from . import _toml
@@ -61,7 +61,7 @@ class Scene:
         ``value`` is a Python bool, number, string, list or dict. The scene is read again with
         the override; if that fails, SceneError is raised and the scene is left as it was."""
         override = f"{key}={_toml.literal(value)}"
-        self._apply(override, "")
+        self._apply(override, f"Scene.set({key!r}, {value!r})")  # how messages name it
         return self
 
     def _apply(self, override: str, label: str) -> None:
@@ -93,12 +93,70 @@ class Scene:
 
     def __getitem__(self, key: str) -> Any:
         """The value of a dotted key as run, e.g. ``scene["model.energy"]``."""
+        if not isinstance(key, str):
+            raise KeyError(key)
         node: Any = self.to_dict()
         for part in key.split("."):
             if not isinstance(node, dict) or part not in node:
                 raise KeyError(key)
             node = node[part]
         return node
+
+    def __contains__(self, key: object) -> bool:
+        """``"model.energy" in scene``: whether a dotted key (or a table such as ``"observe"``) is
+        part of the scene as run."""
+        try:
+            self[key]  # type: ignore[index]
+        except KeyError:
+            return False
+        return True
+
+    def keys(self) -> List[str]:
+        """The dotted keys of the scene as run, every value's (tables spread out), in the
+        order of :meth:`to_toml`; ``list(scene)`` and ``for key in scene`` give the same."""
+        out: List[str] = []
+
+        def walk(prefix: str, node: Any) -> None:
+            for k, v in node.items():
+                if isinstance(v, dict):
+                    walk(prefix + k + ".", v)
+                else:
+                    out.append(prefix + k)
+        walk("", self.to_dict())
+        return out
+
+    def items(self) -> List["tuple[str, Any]"]:
+        """(dotted key, value) pairs of the scene as run, as :meth:`keys` orders them."""
+        return [(k, self[k]) for k in self.keys()]
+
+    def get(self, key: str, default: Any = None) -> Any:
+        """``scene[key]``, or ``default`` when the scene has no such key."""
+        return self[key] if key in self else default
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.keys())
+
+    def __len__(self) -> int:
+        return len(self.keys())
+
+    def __eq__(self, other: object) -> bool:
+        """Scenes are equal when they run the same: every key as run is equal (wherever
+        they were read from, however the values were set)."""
+        if not isinstance(other, Scene):
+            return NotImplemented
+        return self.to_dict() == other.to_dict()
+
+    __hash__ = None  # type: ignore[assignment]  # a Scene changes (set)
+
+    # pickle and copy.deepcopy: the text, its name and the overrides, read again by the library
+    def __reduce__(self):
+        return (_rebuild, (self._text, self._name, list(self._overrides), list(self._labels)))
+
+    def __copy__(self) -> "Scene":
+        return self.copy()
+
+    def __deepcopy__(self, memo: dict) -> "Scene":
+        return self.copy()
 
     @property
     def file(self) -> str:
@@ -116,5 +174,17 @@ class Scene:
         return list(self._overrides)
 
     def __repr__(self) -> str:
+        d = self.to_dict()
+        shown = []
+        for key in ("model.kind", "model.energy", "ensemble.trajectories", "integrator.method", "integrator.step",
+                    "run.duration"):
+            table, _, name = key.partition(".")
+            if name in d.get(table, {}):
+                shown.append(f"{key}={d[table][name]!r}")
         extra = f", {len(self._overrides)} overrides" if self._overrides else ""
-        return f"<arnoldweb.Scene {self._name}{extra}>"
+        return f"<arnoldweb.Scene {self._name}: {', '.join(shown)}{extra}>"
+
+
+def _rebuild(text: str, name: str, overrides: Sequence[str], labels: Sequence[str]) -> Scene:
+    """A pickled Scene, read again by the library."""
+    return Scene._make(text, name, overrides, labels)

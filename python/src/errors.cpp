@@ -1,7 +1,7 @@
 // The library's error types (errors.hpp) raised in Python as the classes of
 // arnoldweb._errors, with their fields as attributes: SceneError(file, line,
 // column, key), DeviceError(device, call, status), BuildError(options, log),
-// OutputError(path). The message is the library's, word for word (the CLI
+// OutputError(path), StateError(source, dataset, row). The message is the library's, word for word (the CLI
 // prints the same text).
 #include "bindings.hpp"
 
@@ -47,6 +47,13 @@ void translate(const std::exception_ptr& p, void*) {
     nb::dict f;
     f["path"] = e.path();
     raise_as("OutputError", e.what(), f);
+  } catch (const arnoldweb::StateError& e) {
+    nb::dict f;
+    f["source"] = e.source();
+    f["dataset"] = e.dataset();
+    f["row"] = e.row();
+    f["reason"] = e.message();
+    raise_as("StateError", e.what(), f);
   } catch (const arnoldweb::Error& e) {
     raise_as("Error", e.what(), nb::dict());
   }

@@ -23,4 +23,6 @@ NB_MODULE(_arnoldweb, m) {
   awpy::bind_run(m);
   awpy::bind_accuracy(m);
   awpy::bind_sphere(m);
+  awpy::bind_saved(m);
+  awpy::bind_states(m);
 }

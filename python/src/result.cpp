@@ -11,6 +11,7 @@
 #include <nanobind/stl/vector.h>
 
 #include <cstring>
+#include <type_traits>
 
 #include "aw_params.h"
 
@@ -35,14 +36,6 @@ template <class T>
 nb::object view(nb::handle owner, const std::vector<T>& v, std::initializer_list<std::size_t> shape) {
   if (v.empty()) return nb::none();
   return nb::cast(nb::ndarray<nb::numpy, const T>(v.data(), shape, owner));
-}
-
-// A fresh array (owned by Python), for what the library does not hold contiguously.
-template <class T>
-nb::object owned(std::vector<T> values, std::initializer_list<std::size_t> shape) {
-  auto* data = new std::vector<T>(std::move(values));
-  nb::capsule owner(data, [](void* p) noexcept { delete static_cast<std::vector<T>*>(p); });
-  return nb::cast(nb::ndarray<nb::numpy, T>(data->data(), shape, owner));
 }
 
 nb::dict counts(const RunRecord& r, std::size_t k) {
@@ -97,7 +90,7 @@ nb::object frames(const RunRecord& r, std::size_t k) {
 // (healpix: 12 nside^2 in RING order; lonlat and plane: [n2][n1]).
 nb::dict indicator_layout(const RunRecord& r, std::size_t k) {
   const arnoldweb::Scene& s = plan(r, k).scene;
-  const std::size_t n = part(r, k).indicators.size() / AW_IND_REALS;
+  const std::size_t n = part(r, k).reals("indicators").size() / AW_IND_REALS;
   nb::dict d;
   d["fli"] = s.fli;
   d["megno"] = s.megno;
@@ -109,6 +102,32 @@ nb::dict indicator_layout(const RunRecord& r, std::size_t k) {
     d["shape"] = nb::make_tuple(n);
   d["grid"] = s.initial == "grid" ? s.grid_kind : std::string();
   return d;
+}
+
+// The records of an output (reals or integers, one row per trajectory) as a zero-copy view; None if absent.
+nb::object records_view(Self s, std::size_t k, const std::string& name, bool integers) {
+  const arnoldweb::Records* rec = part(*s.p, k).records_of(name);
+  if (!rec) return nb::none();
+  if (integers) return view(s.h, rec->ints, {rec->count(), rec->ints_per});
+  return view(s.h, rec->reals, {rec->count(), rec->reals_per});
+}
+
+// Every per-trajectory output as its files hold it: {output: {dataset: array}} (copies).
+nb::dict output_datasets(const RunRecord& r, std::size_t k) {
+  nb::dict out;
+  for (arnoldweb::OutputDataset& d : arnoldweb::output_datasets(plan(r, k), part(r, k))) {
+    if (!out.contains(d.output.c_str())) out[d.output.c_str()] = nb::dict();
+    nb::dict group = nb::borrow<nb::dict>(out[d.output.c_str()]);
+    std::vector<std::size_t> shape(d.shape.begin(), d.shape.end());
+    auto make = [&](auto&& values) {
+      using T = typename std::decay_t<decltype(values)>::value_type;
+      auto* data = new std::vector<T>(std::move(values));
+      nb::capsule owner(data, [](void* p) noexcept { delete static_cast<std::vector<T>*>(p); });
+      return nb::cast(nb::ndarray<nb::numpy, T>(data->data(), shape.size(), shape.data(), owner));
+    };
+    group[d.name.c_str()] = d.integers ? make(std::move(d.ints)) : make(std::move(d.reals));
+  }
+  return out;
 }
 
 // Writes the job's outputs into `dir` as `arnoldweb run --out dir` would.
@@ -162,22 +181,10 @@ void bind_result(nb::module_& m) {
              const auto res = static_cast<std::size_t>(plan(*s.p, k).zoom_resolution);
              return view(s.h, v, {res, res});
            })
-      .def("initial_states", [](Self s, std::size_t k) {
-             const auto& v = part(*s.p, k).initial_r;
-             return view(s.h, v, {v.size() / AW_STATE_REALS, std::size_t(AW_STATE_REALS)});
-           })
-      .def("final_states", [](Self s, std::size_t k) {
-             const auto& v = part(*s.p, k).final_r;
-             return view(s.h, v, {v.size() / AW_STATE_REALS, std::size_t(AW_STATE_REALS)});
-           })
-      .def("final_ints", [](Self s, std::size_t k) {
-             const auto& v = part(*s.p, k).final_i;
-             return view(s.h, v, {v.size() / AW_STATE_INTS, std::size_t(AW_STATE_INTS)});
-           })
-      .def("indicators", [](Self s, std::size_t k) {
-             const auto& v = part(*s.p, k).indicators;
-             return view(s.h, v, {v.size() / AW_IND_REALS, std::size_t(AW_IND_REALS)});
-           })
+      .def("records", &records_view, nb::arg("part"), nb::arg("name"), nb::arg("integers"),
+           "The reals (or integers) of a per-trajectory output, one row per trajectory (zero-copy), or None.")
+      .def("output_datasets", &output_datasets,
+           "Every per-trajectory output as its files hold it: {output: {dataset: array}}.")
       .def("indicator_layout", &indicator_layout,
            "Which indicators the part asked for (fli, megno, lyapunov) and the grid's shape as in indicators.h5.")
       .def("frames", &frames)
@@ -194,9 +201,7 @@ void bind_result(nb::module_& m) {
              const Result& x = part(r, k);
              nb::dict d;
              d["map"] = arnoldweb::digest_map(x);
-             d["initial_states"] = arnoldweb::digest_initial_states(x);
-             d["final_states"] = arnoldweb::digest_final_states(x);
-             d["indicators"] = arnoldweb::digest_indicators(x);
+             for (const auto& rec : arnoldweb::output_names()) d[rec.c_str()] = arnoldweb::digest_records(x, rec);
              return d;
            })
       .def("summary_json", [](const RunRecord& r, std::size_t k) {
@@ -204,11 +209,6 @@ void bind_result(nb::module_& m) {
            }, "summary.json of a part as the library writes it (without the list of files).")
       .def("write", &write, nb::arg("dir"), nb::arg("force"), nb::arg("scene_file"),
            "Writes the outputs into dir with the library's output code (staging, force rules); returns the paths.");
-  m.def(
-      "read_saved_summary", [](const std::string& dir) { return json_loads(arnoldweb::read_saved_summary(dir)); },
-      nb::arg("dir"),
-      "summary.json of an output directory, read and checked as render and compare read it "
-      "(a plain file, a JSON object of the right form; OutputError otherwise).");
 }
 
 }  // namespace awpy

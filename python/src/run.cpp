@@ -7,9 +7,13 @@
 // computed and written at the end (also after a stop), as `arnoldweb run` does.
 #include "bindings.hpp"
 
+#include <nanobind/stl/optional.h>
+
 #include <atomic>
 #include <nanobind/stl/shared_ptr.h>
 #include <nanobind/stl/string.h>
+
+#include "arnoldweb/cluster.hpp"
 
 namespace awpy {
 namespace {
@@ -29,6 +33,13 @@ class PythonHook final : public arnoldweb::Progress, public arnoldweb::JobObserv
   void report(std::uint64_t done, std::uint64_t total, double seconds, bool check_signals) {
     nb::gil_scoped_acquire locked;
     if (stop_.load()) return;  // already stopping: the first exception is the one raised
+    // finish() after an update() that already said done == total: the callback
+    // hears of the end of a part once
+    const bool repeat = !check_signals && reported_ && done == last_done_ && total == last_total_;
+    reported_ = true;
+    last_done_ = done;
+    last_total_ = total;
+    if (repeat) return;
     try {
       if (!callback_.is_none()) callback_(done, total, seconds);
       if (check_signals && PyErr_CheckSignals() != 0) throw nb::python_error();
@@ -39,33 +50,62 @@ class PythonHook final : public arnoldweb::Progress, public arnoldweb::JobObserv
   }
 
   nb::object callback_;
+  bool reported_ = false;
+  std::uint64_t last_done_ = 0, last_total_ = 0;
   std::atomic<bool> stop_{false};
   nb::object exception_ = nb::none();
 };
 
-std::shared_ptr<RunRecord> run_scene(const arnoldweb::Scene& scene, nb::object progress, bool write, bool force) {
+// The plans' warnings (a step that will cost accuracy, ...) through Python's
+// warnings, as arnoldweb.PlanWarning, before anything is computed: a filter
+// that turns them into errors stops the run here.
+void warn_plans(const arnoldweb::Job& job) {
+  nb::object warn = nb::module_::import_("warnings").attr("warn");
+  nb::object category = nb::module_::import_("arnoldweb._errors").attr("PlanWarning");
+  for (std::size_t k = 0; k < job.parts.size(); ++k)
+    for (const std::string& w : job.parts[k].plan.warnings) {
+      const std::string text = k == 0 ? w : "panel " + job.parts[k].name + ": " + w;
+      warn(nb::str(text.data(), text.size()), category, 2);  // stacklevel 2: the caller of arnoldweb.run
+    }
+}
+
+std::shared_ptr<RunRecord> run_scene(const arnoldweb::Scene& scene, nb::object progress, bool write, bool force,
+                                     std::optional<Rows> x, std::optional<Rows> p, const std::string& units) {
   auto record = std::make_shared<RunRecord>();
   record->stop_exception = nb::none();
-  record->job = plan_scene(scene);
+  std::shared_ptr<arnoldweb::StateSet> initial;
+  arnoldweb::Scene s = scene;
+  if (x && p) {  // initial=(X, P): the trajectories start from them
+    s.initial = "file";
+    s.initial_file.clear();
+    initial = states_of(s, *x, *p, units);
+  }
+  record->job = plan_scene(s, std::move(initial));
   const arnoldweb::Job& job = record->job;
+  warn_plans(job);
   arnoldweb::OutputOptions output;
   PythonHook hook(std::move(progress));
   {
     nb::gil_scoped_release unlocked;
     // everything is checked before any work: memory, then the output place
-    const arnoldweb::DeviceInfo device = arnoldweb::find_device(job.main().scene.device);
     const std::uint64_t host = arnoldweb::available_memory();
-    for (const arnoldweb::JobPart& part : job.parts) arnoldweb::check_memory(part.plan, device, host);
+    for (const std::string& id : arnoldweb::device_ids(job.main().scene.device)) {
+      const arnoldweb::DeviceInfo device = arnoldweb::find_device(id);
+      for (const arnoldweb::JobPart& part : job.parts) arnoldweb::check_memory(part.plan, device, host);
+    }
     if (write) {
       output.force = force;
       output.scene_file = scene.file;
       output.expected_bytes = arnoldweb::estimate_output_bytes(job);
       record->written_dir = arnoldweb::check_output_dir(job.main().scene.output_dir, output);
     }
-    auto backend = arnoldweb::open_backend(job.main().scene.device);
+    // every device run.device names (a list, "all"): one thread each
+    const auto backends = arnoldweb::open_backends(job.main().scene.device);
+    std::vector<arnoldweb::Backend*> devices;
+    for (const auto& b : backends) devices.push_back(b.get());
     arnoldweb::RunOptions options;
     options.stop = &hook.stop();
-    record->result = arnoldweb::run_job(job, *backend, options, &hook);
+    record->result = arnoldweb::run_job_on(job, devices, options, &hook);
     if (write) {
       // a failed write must not lose what was computed: the error is raised
       // by the package with the result attached
@@ -85,6 +125,7 @@ std::shared_ptr<RunRecord> run_scene(const arnoldweb::Scene& scene, nb::object p
 
 void bind_run(nb::module_& m) {
   m.def("_run", &run_scene, nb::arg("scene"), nb::arg("progress").none(), nb::arg("write"), nb::arg("force"),
+        nb::arg("x").none() = nb::none(), nb::arg("p").none() = nb::none(), nb::arg("units") = "radians",
         "Runs a scene and its panels; progress(done, total, seconds) after every chunk. With write, "
         "the scene's output.dir is checked first and written at the end. Returns the run's record.");
 }

@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "aw_params.h"
-#include "plan/kernel_params.hpp"
+#include "plan/plan_params.hpp"
 #include "support.hpp"
 
 using namespace arnoldweb;
@@ -176,10 +176,10 @@ void run_variants(const std::function<bool(const Plan&)>& keep) {
         CHECK(r.binned + r.flagged() + r.left_region == r.trajectories);
         if (!variant.bitwise) continue;
         const Result ref = awtest::run_on("cpu", plan);
-        CHECK(awtest::first_difference(r.initial_r, ref.initial_r) == -1);
-        const long d = awtest::first_difference(r.final_r, ref.final_r);
+        CHECK(awtest::first_difference(r.reals("initial_states"), ref.reals("initial_states")) == -1);
+        const long d = awtest::first_difference(r.reals("final_states"), ref.reals("final_states"));
         CHECK_MESSAGE(d == -1, "first differing state value at trajectory " << d / AW_STATE_REALS);
-        CHECK(r.final_i == ref.final_i);
+        CHECK(r.ints("final_states") == ref.ints("final_states"));
         CHECK(r.map == ref.map);
         CHECK(r.frames == ref.frames);
         CHECK(r.zoom == ref.zoom);
@@ -190,7 +190,7 @@ void run_variants(const std::function<bool(const Plan&)>& keep) {
         CHECK(r.left_region == ref.left_region);
         CHECK(same_bits(r.energy.max, ref.energy.max));
         CHECK(r.energy.log_hist == ref.energy.log_hist);
-        CHECK(awtest::first_difference(r.indicators, ref.indicators) == -1);
+        CHECK(awtest::first_difference(r.reals("indicators"), ref.reals("indicators")) == -1);
         if (plan.kernel.features & AW_F_TEST_INJECT) CHECK(r.flagged_nonfinite == 1);
       }
     }

@@ -58,17 +58,17 @@ TEST_SUITE("parity") {
   TEST_CASE("portable math: states, map and counters of every device, cpu included, match the scalar core bit for bit") {
     for (Precision p : {Precision::Double, Precision::Float}) {
       const Result& ref = scalar_reference(p);
-      REQUIRE(ref.final_r.size() == 10000 * AW_STATE_REALS);
+      REQUIRE(ref.reals("final_states").size() == 10000 * AW_STATE_REALS);
       REQUIRE(ref.binned > 9000);  // a reference that binned nothing would prove little
       REQUIRE_FALSE(awtest::devices_under_test().empty());
       for (const auto& dev : awtest::devices_under_test()) {
         CAPTURE(dev.id);
         CAPTURE(to_string(p));
         const Result r = awtest::run_on(dev.id, make_plan(parity_scene(p, MathMode::Portable)));
-        CHECK(awtest::first_difference(r.initial_r, ref.initial_r) == -1);
-        const long d = awtest::first_difference(r.final_r, ref.final_r);
+        CHECK(awtest::first_difference(r.reals("initial_states"), ref.reals("initial_states")) == -1);
+        const long d = awtest::first_difference(r.reals("final_states"), ref.reals("final_states"));
         CHECK_MESSAGE(d == -1, "first differing state value at trajectory " << d / AW_STATE_REALS);
-        CHECK(awtest::first_difference(r.final_i, ref.final_i) == -1);
+        CHECK(awtest::first_difference(r.ints("final_states"), ref.ints("final_states")) == -1);
         CHECK(digest_map(r) == digest_map(ref));
         CHECK(r.binned == ref.binned);
         CHECK(r.flagged() == ref.flagged());
@@ -90,14 +90,14 @@ TEST_SUITE("parity") {
                                     "observe.initial_states=false"});
       const Plan plan = make_plan(s);
       const Result ref = awtest::run_scalar_core(plan);
-      REQUIRE(ref.final_r.size() == 512 * AW_STATE_REALS);
+      REQUIRE(ref.reals("final_states").size() == 512 * AW_STATE_REALS);
       REQUIRE_FALSE(awtest::devices_under_test().empty());
       for (const auto& dev : awtest::devices_under_test()) {
         CAPTURE(dev.id);
         const Result r = awtest::run_on(dev.id, plan);
-        const long d = awtest::first_difference(r.final_r, ref.final_r);
+        const long d = awtest::first_difference(r.reals("final_states"), ref.reals("final_states"));
         CHECK_MESSAGE(d == -1, "first differing state value at trajectory " << d / AW_STATE_REALS);
-        CHECK(awtest::first_difference(r.final_i, ref.final_i) == -1);
+        CHECK(awtest::first_difference(r.ints("final_states"), ref.ints("final_states")) == -1);
         CHECK(r.energy.max == ref.energy.max);
       }
     }
@@ -127,15 +127,15 @@ TEST_SUITE("parity") {
         CAPTURE(model.back());
         CAPTURE(to_string(p));
         const Result ref = awtest::run_on("cpu", plan);
-        REQUIRE(ref.final_r.size() == 2000 * AW_STATE_REALS);
+        REQUIRE(ref.reals("final_states").size() == 2000 * AW_STATE_REALS);
         REQUIRE(ref.binned > 1900);
         for (const auto& dev : awtest::devices_under_test()) {
           CAPTURE(dev.id);
           const Result r = awtest::run_on(dev.id, plan);
-          CHECK(awtest::first_difference(r.initial_r, ref.initial_r) == -1);
-          const long d = awtest::first_difference(r.final_r, ref.final_r);
+          CHECK(awtest::first_difference(r.reals("initial_states"), ref.reals("initial_states")) == -1);
+          const long d = awtest::first_difference(r.reals("final_states"), ref.reals("final_states"));
           CHECK_MESSAGE(d == -1, "first differing state value at trajectory " << d / AW_STATE_REALS);
-          CHECK(awtest::first_difference(r.final_i, ref.final_i) == -1);
+          CHECK(awtest::first_difference(r.ints("final_states"), ref.ints("final_states")) == -1);
           CHECK(digest_map(r) == digest_map(ref));
           CHECK(r.energy.max == ref.energy.max);
         }

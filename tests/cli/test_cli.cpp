@@ -49,7 +49,7 @@ TEST_SUITE("cli") {
         {"wrong type", with("ensemble", "seed = \"x\""), "", 2, {"ensemble.seed", "must be an integer"}},
         {"no trajectories", "", "--set ensemble.trajectories=0", 2, {"ensemble.trajectories", "from 1 to 1e13"}},
         {"absurdly many trajectories", "", "--set ensemble.trajectories=100000000000000", 2, {"from 1 to 1e13"}},
-        {"no accessible phase space", "", "--set model.energy=-2.5", 2, {"model.energy", "greater than -2"}},
+        {"no accessible phase space", "", "--set model.energy=-2.5", 2, {"model.energy", "no accessible phase space", "choose E > -2"}},
         {"most of the torus forbidden", "", "--set model.energy=-1.97", 2, {"model.energy", "accessible", "choose E >="}},
         {"step <= 0", "", "--set integrator.step=0", 2, {"integrator.step", "greater than 0"}},
         {"step not finite", "", "--set integrator.step=nan", 2, {"integrator.step", "greater than 0"}},

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "aw_params.h"
-#include "plan/kernel_params.hpp"
+#include "plan/plan_params.hpp"
 #include "scalar_core.hpp"
 #include "support.hpp"
 
@@ -104,7 +104,7 @@ TEST_SUITE("parity") {
       const Vec3 c = direction(30, 20);
       double mean_cos = 0;
       for (std::size_t t = 0; t < s.trajectories; ++t) {
-        const Vec3 p = momentum(r.initial_r, t);
+        const Vec3 p = momentum(r.reals("initial_states"), t);
         const double cosang = dot(unit(p[0], p[1], p[2]), c);
         CHECK(cosang >= std::cos(4 * kDeg) - 1e-12);
         mean_cos += cosang / static_cast<double>(s.trajectories);
@@ -116,7 +116,7 @@ TEST_SUITE("parity") {
       s = effects_scene(sets);
       r = awtest::run_on(dev.id, make_plan(s));
       for (std::size_t t = 0; t < s.trajectories; ++t) {
-        const Vec3 p = momentum(r.initial_r, t);
+        const Vec3 p = momentum(r.reals("initial_states"), t);
         const double lat = std::atan2(p[2], std::hypot(p[0], p[1])) / kDeg;
         const double lon = std::atan2(p[1], p[0]) / kDeg;
         CHECK(lat >= -60 - 1e-9);
@@ -132,12 +132,12 @@ TEST_SUITE("parity") {
       double mx = 0, my = 0, vx = 0, vy = 0;
       const double n = static_cast<double>(s.trajectories);
       for (std::size_t t = 0; t < s.trajectories; ++t) {
-        const Vec3 p = momentum(r.initial_r, t);
+        const Vec3 p = momentum(r.reals("initial_states"), t);
         mx += p[0] / n;
         my += p[1] / n;
       }
       for (std::size_t t = 0; t < s.trajectories; ++t) {
-        const Vec3 p = momentum(r.initial_r, t);
+        const Vec3 p = momentum(r.reals("initial_states"), t);
         vx += (p[0] - mx) * (p[0] - mx) / n;
         vy += (p[1] - my) * (p[1] - my) / n;
       }
@@ -160,11 +160,11 @@ TEST_SUITE("parity") {
       std::vector<std::uint64_t> host(32 * 32, 0);
       const double* reg = &arnoldweb::detail::params(plan).reals.zoom.c[0];
       for (std::size_t t = 0; t < s.trajectories; ++t) {
-        if (r.final_i[t * AW_STATE_INTS + 3] != AW_STATUS_OK) continue;
+        if (r.ints("final_states")[t * AW_STATE_INTS + 3] != AW_STATUS_OK) continue;
         double d[3];
         for (int k = 0; k < 3; ++k)
-          d[k] = static_cast<double>(r.final_i[t * AW_STATE_INTS + k]) +
-                 (r.final_r[t * AW_STATE_REALS + k] - r.initial_r[t * AW_STATE_REALS + k]);
+          d[k] = static_cast<double>(r.ints("final_states")[t * AW_STATE_INTS + k]) +
+                 (r.reals("final_states")[t * AW_STATE_REALS + k] - r.reals("initial_states")[t * AW_STATE_REALS + k]);
         const double dc = d[0] * reg[0] + d[1] * reg[1] + d[2] * reg[2];
         const double gx = (d[0] * reg[3] + d[1] * reg[4] + d[2] * reg[5]) / dc;
         const double gy = (d[0] * reg[6] + d[1] * reg[7] + d[2] * reg[8]) / dc;
@@ -198,10 +198,10 @@ TEST_SUITE("parity") {
       CHECK(total(r.map) == r.binned);
       const double* reg = &arnoldweb::detail::params(plan).reals.confine.c[0];
       for (std::size_t t = 0; t < s.trajectories; ++t) {
-        const auto st = r.final_i[t * AW_STATE_INTS + 3];
+        const auto st = r.ints("final_states")[t * AW_STATE_INTS + 3];
         CHECK((st == AW_STATUS_OK || st == AW_STATUS_LEFT_REGION));
         if (st != AW_STATUS_OK) continue;
-        const Vec3 p = momentum(r.final_r, t);
+        const Vec3 p = momentum(r.reals("final_states"), t);
         const double dc = p[0] * reg[0] + p[1] * reg[1] + p[2] * reg[2];
         CHECK(std::fabs(p[0] * reg[3] + p[1] * reg[4] + p[2] * reg[5]) <= reg[9] * dc);
         CHECK(std::fabs(p[0] * reg[6] + p[1] * reg[7] + p[2] * reg[8]) <= reg[9] * dc);
@@ -254,8 +254,8 @@ TEST_SUITE("parity") {
         CHECK(r.frames == ref.frames);
         CHECK(r.zoom == ref.zoom);
         CHECK(digest_map(r) == digest_map(ref));
-        CHECK(digest_initial_states(r) == digest_initial_states(ref));
-        CHECK(digest_final_states(r) == digest_final_states(ref));
+        CHECK(digest_records(r, "initial_states") == digest_records(ref, "initial_states"));
+        CHECK(digest_records(r, "final_states") == digest_records(ref, "final_states"));
         CHECK(r.left_region == ref.left_region);
         CHECK(r.flagged_energy == ref.flagged_energy);
         CHECK(r.binned == ref.binned);

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "aw_params.h"
-#include "plan/kernel_params.hpp"
+#include "plan/plan_params.hpp"
 #include "support.hpp"
 
 using namespace arnoldweb;
@@ -57,8 +57,8 @@ TEST_SUITE("parity") {
         CHECK(r.binned == 999);
         CHECK(r.binned + r.flagged() == r.trajectories);
         CHECK(total(r.map) == 999 * 2);  // two windows each
-        CHECK(r.final_i[417 * AW_STATE_INTS + 3] == AW_STATUS_NONFINITE);
-        CHECK(r.final_i[416 * AW_STATE_INTS + 3] == AW_STATUS_OK);
+        CHECK(r.ints("final_states")[417 * AW_STATE_INTS + 3] == AW_STATUS_NONFINITE);
+        CHECK(r.ints("final_states")[416 * AW_STATE_INTS + 3] == AW_STATUS_OK);
         CHECK(std::isfinite(r.energy.max));
       }
     }

@@ -61,7 +61,7 @@ struct Indicators {
   double fli, megno, megno_lyapunov, lyapunov;
 };
 Indicators indicators_of(const Result& r, std::size_t t = 0) {
-  const double* v = &r.indicators[t * AW_IND_REALS];
+  const double* v = &r.reals("indicators")[t * AW_IND_REALS];
   return {v[AW_IND_FLI], v[AW_IND_MEGNO], v[AW_IND_MEGNO_LYAPUNOV], v[AW_IND_LYAPUNOV]};
 }
 
@@ -116,6 +116,18 @@ core_d::aw_lstate displaced(core_d::aw_lstate a, const Point& d) {
   return a;
 }
 
+// A state from the kernel's initial-state record (u in turns, P).
+core_d::aw_lstate kernel_state(const double* start) {
+  core_d::aw_lstate a{};
+  a.ux = start[0];
+  a.uy = start[1];
+  a.uz = start[2];
+  a.px = start[3];
+  a.py = start[4];
+  a.pz = start[5];
+  return a;
+}
+
 // The largest Lyapunov exponent (1/T) from two nearby trajectories: the
 // second starts d0 away along w0, and is pulled back to distance d0 along
 // the current separation every T (Benettin's renormalisation); the sum of
@@ -124,13 +136,7 @@ core_d::aw_lstate displaced(core_d::aw_lstate a, const Point& d) {
 double two_trajectory_lyapunov(const Plan& plan, const double* start, const Point& w0, double duration) {
   const double d0 = 1e-8;
   const int per_t = static_cast<int>(std::lround(1.0 / plan.step));
-  core_d::aw_lstate a{};
-  a.ux = start[0];
-  a.uy = start[1];
-  a.uz = start[2];
-  a.px = start[3];
-  a.py = start[4];
-  a.pz = start[5];
+  core_d::aw_lstate a = kernel_state(start);
   Point d;
   for (std::size_t i = 0; i < 6; ++i) d[i] = d0 * w0[i];
   core_d::aw_lstate b = displaced(a, d);
@@ -155,6 +161,35 @@ Point unit_w0(const Scene& s) {
   for (double v : s.tangent_initial) n += v * v;
   for (std::size_t i = 0; i < 6; ++i) w[i] = s.tangent_initial[i] / std::sqrt(n);
   return w;
+}
+
+// <Y> from the core's tangent vector one step at a time (every step ends with
+// its own last kick: the synchronised w), the logarithms and sums in long
+// double: log|w_k| = log2w ln 2 + log|w_stored|. The same definition as the
+// kernel's, Y_k = (2/k) sum_j j log(|w_j| / |w_{j-1}|), accumulated
+// independently. `start`: the kernel's initial state.
+long double reference_megno(const Plan& plan, const double* start, long steps) {
+  const core_d::aw_rparams* rp = core_d::rp_of(plan);
+  const core_d::aw_config cfg = {plan.kernel.features, plan.kernel.stages, plan.kernel.kick_first ? 1 : 0,
+                                 plan.kernel.initial, plan.kernel.gradient ? 1 : 0};
+  core_d::aw_lstate s = kernel_state(start);
+  core_d::aw_tangent t;
+  core_d::aw_tangent_begin(&t, rp);
+  core_d::aw_tangent_force(&s, &t, rp);
+  auto log_norm = [&t] {
+    const long double n2 = (long double)t.qx * t.qx + (long double)t.qy * t.qy + (long double)t.qz * t.qz +
+                           (long double)t.px * t.px + (long double)t.py * t.py + (long double)t.pz * t.pz;
+    return (long double)t.log2w * 0.693147180559945309417232121458176568L + 0.5L * logl(n2);
+  };
+  long double previous = log_norm(), s1 = 0, ysum = 0;
+  for (long k = 1; k <= steps; ++k) {
+    core_d::aw_segment_tangent(cfg, &s, &t, 1, rp);
+    const long double now = log_norm();
+    s1 += (long double)k * (now - previous);
+    ysum += 2 * s1 / (long double)k;
+    previous = now;
+  }
+  return ysum / (long double)steps;
 }
 
 }  // namespace
@@ -233,8 +268,8 @@ TEST_SUITE("indicators") {
     CHECK(b.fli > 20);
     // an independent estimate: two trajectories 1e-8 apart, renormalised every T
     const Plan plan = make_plan(s200);
-    REQUIRE(r200.initial_r.size() == AW_STATE_REALS);
-    const double lambda2 = two_trajectory_lyapunov(plan, r200.initial_r.data(), unit_w0(s200), 200);
+    REQUIRE(r200.reals("initial_states").size() == AW_STATE_REALS);
+    const double lambda2 = two_trajectory_lyapunov(plan, r200.reals("initial_states").data(), unit_w0(s200), 200);
     MESSAGE("two trajectories: lambda = " << lambda2);
     CHECK(lambda2 > 0.1);
     CHECK(b.lyapunov == doctest::Approx(lambda2).epsilon(0.01));       // the same quantity, to 1 %
@@ -271,10 +306,10 @@ TEST_SUITE("indicators") {
     const Plan plan = make_plan(s);
     REQUIRE(plan.scene.trajectories == 768u);
     const Result r = awtest::run_on("cpu", plan);
-    REQUIRE(r.initial_r.size() == 768u * AW_STATE_REALS);
+    REQUIRE(r.reals("initial_states").size() == 768u * AW_STATE_REALS);
     const double v = 2 * std::cos(0.5) * std::cos(1.0) * std::cos(2.0) * std::cos(2.0);
     for (std::size_t i = 0; i < 768; ++i) {
-      const double* st = &r.initial_r[i * AW_STATE_REALS];
+      const double* st = &r.reals("initial_states")[i * AW_STATE_REALS];
       const double p = std::sqrt(st[3] * st[3] + st[4] * st[4] + st[5] * st[5]);
       CHECK(p == doctest::Approx(std::sqrt(2 * (15 - v))).epsilon(1e-13));
       CHECK(vec2pix_ring(8, {st[3], st[4], st[5]}) == i);
@@ -298,10 +333,10 @@ TEST_SUITE("indicators") {
       lyapunov = true
     )");
     const Result r = awtest::run_on("cpu", make_plan(s));
-    REQUIRE(r.initial_r.size() == 12u * AW_STATE_REALS);
+    REQUIRE(r.reals("initial_states").size() == 12u * AW_STATE_REALS);
     for (std::size_t j = 0; j < 3; ++j)
       for (std::size_t i = 0; i < 4; ++i) {
-        const double* st = &r.initial_r[(j * 4 + i) * AW_STATE_REALS];
+        const double* st = &r.reals("initial_states")[(j * 4 + i) * AW_STATE_REALS];
         const double lon = std::atan2(st[4], st[3]) * 180 / M_PI;
         const double lat = std::atan2(st[5], std::hypot(st[3], st[4])) * 180 / M_PI;
         CHECK(lon == doctest::Approx(41 + 2.0 * i).epsilon(1e-12));
@@ -321,10 +356,10 @@ TEST_SUITE("indicators") {
       megno = true
     )");
     const Result rp = awtest::run_on("cpu", make_plan(plane));
-    REQUIRE(rp.initial_r.size() == 10u * AW_STATE_REALS);
+    REQUIRE(rp.reals("initial_states").size() == 10u * AW_STATE_REALS);
     for (std::size_t j = 0; j < 2; ++j)
       for (std::size_t i = 0; i < 5; ++i) {
-        const double* st = &rp.initial_r[(j * 5 + i) * AW_STATE_REALS];
+        const double* st = &rp.reals("initial_states")[(j * 5 + i) * AW_STATE_REALS];
         CHECK(st[5] == doctest::Approx(0.1 + 0.2 * i));  // axes[0] = p_z over range1
         CHECK(st[3] == doctest::Approx(2.5 + 1.0 * j));  // axes[1] = p_x over range2
         CHECK(st[4] == 7);                               // the fixed one
@@ -441,9 +476,9 @@ TEST_SUITE("indicators") {
     std::vector<hsize_t> dims;
     const auto fli = read_doubles(dir + "/indicators.h5", "fli", &dims);
     CHECK(dims == std::vector<hsize_t>{4, 6});  // rows = the second momentum
-    for (std::size_t t = 0; t < 24; ++t) CHECK(fli[t] == r.indicators[t * AW_IND_REALS + AW_IND_FLI]);
+    for (std::size_t t = 0; t < 24; ++t) CHECK(fli[t] == r.reals("indicators")[t * AW_IND_REALS + AW_IND_FLI]);
     const auto megno = read_doubles(dir + "/indicators.h5", "megno", &dims);
-    CHECK(megno[5] == r.indicators[5 * AW_IND_REALS + AW_IND_MEGNO]);
+    CHECK(megno[5] == r.reals("indicators")[5 * AW_IND_REALS + AW_IND_MEGNO]);
     const auto axis1 = read_doubles(dir + "/indicators.h5", "grid/axis1", &dims);
     CHECK(axis1 == std::vector<double>{2 + 1 / 12.0, 2 + 3 / 12.0, 2 + 5 / 12.0, 2 + 7 / 12.0, 2 + 9 / 12.0, 2 + 11 / 12.0});
     const auto axis2 = read_doubles(dir + "/indicators.h5", "grid/axis2", &dims);
@@ -503,6 +538,32 @@ TEST_SUITE("indicators") {
   }
 }
 
+TEST_SUITE("indicators") {
+  // issue 26, item 4: the growth rate of a step is the exact ratio of norms, so the kernel's <Y>
+  // and the same definition accumulated independently agree to round-off at every step size;
+  // the former rate h (w . w') / |w|^2 was low by O(h) (-1.31e-3, -6.6e-4, -3.3e-4 here)
+  TEST_CASE("MEGNO has no step bias: <Y> equals the exact-ratio definition to round-off at h, h/2, h/4") {
+    // E = 50 (perturbation 2/E = 0.04), |P| = 10 along lon 30, lat 40 degrees at X = (0.3, 0.7, 1.1):
+    // a regular orbit (<Y> close to 2); 100 T at h = 0.01, 0.005, 0.0025 T
+    const double lon = 30 * M_PI / 180, lat = 40 * M_PI / 180;
+    const std::array<double, 3> p = {10 * std::cos(lat) * std::cos(lon), 10 * std::cos(lat) * std::sin(lon),
+                                     10 * std::sin(lat)};
+    for (const double h : {0.01, 0.005, 0.0025}) {
+      CAPTURE(h);
+      const Plan plan = make_plan(orbit_scene(50, p, {0.3, 0.7, 1.1}, 100, h, {"observe.energy_error=false"}));
+      const Result r = awtest::run_on("cpu", plan);
+      REQUIRE(r.reals("initial_states").size() == AW_STATE_REALS);
+      const double megno = indicators_of(r).megno;
+      const long double ref = reference_megno(plan, r.reals("initial_states").data(), std::lround(100 / h));
+      const double difference = static_cast<double>(megno - ref);
+      MESSAGE("h = " << h << " T: <Y> = " << megno << ", exact-ratio reference " << static_cast<double>(ref)
+                     << ", difference " << difference);
+      CHECK(std::fabs(ref - 2) < 0.1);        // a regular orbit
+      CHECK(std::fabs(difference) < 1e-10);   // round-off: no O(h) term left
+    }
+  }
+}
+
 TEST_SUITE("parity") {
   TEST_CASE("indicators: every device's records match the scalar core bit for bit, and the states are unchanged") {
     for (Precision p : {Precision::Double, Precision::Float}) {
@@ -527,15 +588,15 @@ TEST_SUITE("parity") {
       const Scene without = awtest::scene_from(toml, sets);
       const Result ref = awtest::run_scalar_core(make_plan(with));
       const Result plain = awtest::run_scalar_core(make_plan(without));
-      REQUIRE(ref.indicators.size() == 3000u * AW_IND_REALS);
-      CHECK(awtest::first_difference(ref.final_r, plain.final_r) == -1);
+      REQUIRE(ref.reals("indicators").size() == 3000u * AW_IND_REALS);
+      CHECK(awtest::first_difference(ref.reals("final_states"), plain.reals("final_states")) == -1);
       CHECK(ref.map == plain.map);
       for (const DeviceInfo& d : awtest::devices_under_test()) {
         CAPTURE(d.id);
         if (p == Precision::Double && !d.fp64) continue;
         const Result r = awtest::run_on(d.id, make_plan(with));
-        CHECK(awtest::first_difference(r.indicators, ref.indicators) == -1);
-        CHECK(awtest::first_difference(r.final_r, ref.final_r) == -1);
+        CHECK(awtest::first_difference(r.reals("indicators"), ref.reals("indicators")) == -1);
+        CHECK(awtest::first_difference(r.reals("final_states"), ref.reals("final_states")) == -1);
         CHECK(r.map == ref.map);
       }
     }

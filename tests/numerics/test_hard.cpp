@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "plan/kernel_params.hpp"
+#include "plan/plan_params.hpp"
 #include "support.hpp"
 #include "test_hard.hpp"
 
@@ -227,7 +227,7 @@ TEST_SUITE("hard") {
       Plan plan = make_plan(s);
       plan.kernel.features |= AW_F_REVERSE;
       const Result ref = awtest::run_on("cpu", plan);
-      REQUIRE(ref.final_r.size() == c.n * AW_STATE_REALS);
+      REQUIRE(ref.reals("final_states").size() == c.n * AW_STATE_REALS);
       CHECK(ref.binned == c.n);
       const std::vector<double> err = return_errors(ref);
       const double med = quantile(err, 0.5), q90 = quantile(err, 0.9), q99 = quantile(err, 0.99),
@@ -243,10 +243,10 @@ TEST_SUITE("hard") {
         if (dev.id == "cpu") continue;  // the reference itself
         CAPTURE(dev.id);
         const Result r = awtest::run_on(dev.id, plan);
-        const long d = awtest::first_difference(r.final_r, ref.final_r);
+        const long d = awtest::first_difference(r.reals("final_states"), ref.reals("final_states"));
         CHECK_MESSAGE(d == -1, "first differing state value at trajectory " << d / AW_STATE_REALS);
-        CHECK(awtest::first_difference(r.final_i, ref.final_i) == -1);
-        CHECK(digest_final_states(r) == digest_final_states(ref));
+        CHECK(awtest::first_difference(r.ints("final_states"), ref.ints("final_states")) == -1);
+        CHECK(digest_records(r, "final_states") == digest_records(ref, "final_states"));
       }
     }
   }
@@ -334,8 +334,8 @@ TEST_SUITE("hard") {
         CHECK(r.energy.max <= 1e-8);
         std::uint64_t not_ok = 0, unwrapped_angles = 0;
         for (std::size_t i = 0; i < s.trajectories; ++i) {
-          not_ok += r.final_i[i * AW_STATE_INTS + 3] != AW_STATUS_OK;
-          for (int k = 0; k < 3; ++k) unwrapped_angles += !(std::fabs(r.final_r[i * AW_STATE_REALS + k]) <= 0.5);
+          not_ok += r.ints("final_states")[i * AW_STATE_INTS + 3] != AW_STATUS_OK;
+          for (int k = 0; k < 3; ++k) unwrapped_angles += !(std::fabs(r.reals("final_states")[i * AW_STATE_REALS + k]) <= 0.5);
         }
         CHECK(not_ok == 0);
         CHECK(unwrapped_angles == 0);
@@ -346,8 +346,8 @@ TEST_SUITE("hard") {
           double widest = 0;
           for (std::size_t i = 0; i < s.trajectories; ++i)
             for (int k = 0; k < 3; ++k)
-              widest = std::max(widest, std::fabs(static_cast<double>(r.final_i[i * AW_STATE_INTS + k]) +
-                                                  (r.final_r[i * AW_STATE_REALS + k] - r.initial_r[i * AW_STATE_REALS + k])));
+              widest = std::max(widest, std::fabs(static_cast<double>(r.ints("final_states")[i * AW_STATE_INTS + k]) +
+                                                  (r.reals("final_states")[i * AW_STATE_REALS + k] - r.reals("initial_states")[i * AW_STATE_REALS + k])));
           CHECK(widest < 0.11);
         }
       }
@@ -398,10 +398,10 @@ TEST_SUITE("hard") {
           Vec3 vd, vf;
           for (int k = 0; k < 3; ++k) {
             const std::size_t ri = i * AW_STATE_REALS + k, ii = i * AW_STATE_INTS + k;
-            vd[k] = static_cast<double>(rd.final_i[ii]) + (rd.final_r[ri] - rd.initial_r[ri]);
-            vf[k] = static_cast<double>(rf.final_i[ii]) + (rf.final_r[ri] - rf.initial_r[ri]);
-            const double d = 2 * M_PI * (static_cast<double>(rd.final_i[ii] - rf.final_i[ii]) + (rd.final_r[ri] - rf.final_r[ri]));
-            const double e = rd.final_r[ri + 3] - rf.final_r[ri + 3];
+            vd[k] = static_cast<double>(rd.ints("final_states")[ii]) + (rd.reals("final_states")[ri] - rd.reals("initial_states")[ri]);
+            vf[k] = static_cast<double>(rf.ints("final_states")[ii]) + (rf.reals("final_states")[ri] - rf.reals("initial_states")[ri]);
+            const double d = 2 * M_PI * (static_cast<double>(rd.ints("final_states")[ii] - rf.ints("final_states")[ii]) + (rd.reals("final_states")[ri] - rf.reals("final_states")[ri]));
+            const double e = rd.reals("final_states")[ri + 3] - rf.reals("final_states")[ri + 3];
             dx2 += d * d;
             dp2 += e * e;
           }

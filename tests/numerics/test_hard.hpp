@@ -321,10 +321,10 @@ inline std::vector<double> return_errors(const arnoldweb::Result& r) {
   for (std::size_t i = 0; i < r.trajectories; ++i) {
     double dx2 = 0, dp2 = 0;
     for (int c = 0; c < 3; ++c) {
-      const double turns = static_cast<double>(r.final_i[i * AW_STATE_INTS + c]) +
-                           (r.final_r[i * AW_STATE_REALS + c] - r.initial_r[i * AW_STATE_REALS + c]);
+      const double turns = static_cast<double>(r.ints("final_states")[i * AW_STATE_INTS + c]) +
+                           (r.reals("final_states")[i * AW_STATE_REALS + c] - r.reals("initial_states")[i * AW_STATE_REALS + c]);
       const double dx = 2 * M_PI * turns;
-      const double dp = r.final_r[i * AW_STATE_REALS + 3 + c] - r.initial_r[i * AW_STATE_REALS + 3 + c];
+      const double dp = r.reals("final_states")[i * AW_STATE_REALS + 3 + c] - r.reals("initial_states")[i * AW_STATE_REALS + 3 + c];
       dx2 += dx * dx;
       dp2 += dp * dp;
     }

@@ -38,9 +38,9 @@ std::uint64_t trajectories_for(const DeviceInfo& d, std::uint64_t gpu, std::uint
 
 // The first n state records of a and b are the same bits.
 bool same_first(const Result& a, const Result& b, std::uint64_t n) {
-  return a.final_r.size() >= n * AW_STATE_REALS && b.final_r.size() >= n * AW_STATE_REALS &&
-         std::memcmp(a.final_r.data(), b.final_r.data(), n * AW_STATE_REALS * sizeof(double)) == 0 &&
-         std::memcmp(a.final_i.data(), b.final_i.data(), n * AW_STATE_INTS * sizeof(std::int64_t)) == 0;
+  return a.reals("final_states").size() >= n * AW_STATE_REALS && b.reals("final_states").size() >= n * AW_STATE_REALS &&
+         std::memcmp(a.reals("final_states").data(), b.reals("final_states").data(), n * AW_STATE_REALS * sizeof(double)) == 0 &&
+         std::memcmp(a.ints("final_states").data(), b.ints("final_states").data(), n * AW_STATE_INTS * sizeof(std::int64_t)) == 0;
 }
 
 }  // namespace
@@ -221,7 +221,7 @@ TEST_SUITE("hard-long") {
       const Result r = awtest::run_on(dev.id, p);
       CHECK(same_first(r, ref, n_cpu));
       if (!dev.is_cpu) {
-        if (gpu_ref.final_r.empty())
+        if (gpu_ref.reals("final_states").empty())
           gpu_ref = r;
         else
           CHECK(same_first(r, gpu_ref, n));

@@ -194,18 +194,18 @@ TEST_SUITE("hard") {
         CAPTURE(c.orbit.name);
         const Plan plan = make_plan(orbit_scene(c.orbit, c.horizon));
         const Result r = awtest::run_on(dev.id, plan);
-        REQUIRE(r.final_r.size() == (c.orbit.index + 1) * AW_STATE_REALS);
+        REQUIRE(r.reals("final_states").size() == (c.orbit.index + 1) * AW_STATE_REALS);
         const std::size_t i = c.orbit.index;
-        const double got[6] = {r.final_r[i * AW_STATE_REALS + 0], r.final_r[i * AW_STATE_REALS + 1],
-                               r.final_r[i * AW_STATE_REALS + 2], r.final_r[i * AW_STATE_REALS + 3],
-                               r.final_r[i * AW_STATE_REALS + 4], r.final_r[i * AW_STATE_REALS + 5]};
+        const double got[6] = {r.reals("final_states")[i * AW_STATE_REALS + 0], r.reals("final_states")[i * AW_STATE_REALS + 1],
+                               r.reals("final_states")[i * AW_STATE_REALS + 2], r.reals("final_states")[i * AW_STATE_REALS + 3],
+                               r.reals("final_states")[i * AW_STATE_REALS + 4], r.reals("final_states")[i * AW_STATE_REALS + 5]};
         const double want[6] = {out[k].end.ux, out[k].end.uy, out[k].end.uz,
                                 out[k].end.px, out[k].end.py, out[k].end.pz};
         CHECK(std::memcmp(got, want, sizeof got) == 0);
-        CHECK(r.final_i[i * AW_STATE_INTS + 0] == out[k].end.wx);
-        CHECK(r.final_i[i * AW_STATE_INTS + 1] == out[k].end.wy);
-        CHECK(r.final_i[i * AW_STATE_INTS + 2] == out[k].end.wz);
-        CHECK(r.final_i[i * AW_STATE_INTS + 3] == AW_STATUS_OK);
+        CHECK(r.ints("final_states")[i * AW_STATE_INTS + 0] == out[k].end.wx);
+        CHECK(r.ints("final_states")[i * AW_STATE_INTS + 1] == out[k].end.wy);
+        CHECK(r.ints("final_states")[i * AW_STATE_INTS + 2] == out[k].end.wz);
+        CHECK(r.ints("final_states")[i * AW_STATE_INTS + 3] == AW_STATUS_OK);
       }
     }
   }

@@ -86,7 +86,7 @@ TEST_SUITE("output") {
     CHECK(j["energy_error"]["max"].get<double>() == r.energy.max);
     CHECK(j["energy_error"]["mean"].get<double>() == r.energy.mean);
     CHECK(j["digests"]["map"] == digest_map(r));
-    CHECK(j["digests"]["final_states"] == digest_final_states(r));
+    CHECK(j["digests"]["final_states"] == digest_records(r, "final_states"));
     CHECK(j["device"]["id"] == "cpu");
     CHECK(j["trajectory_steps_per_second"].get<double>() > 0);
     CHECK(j["scene"]["model"]["energy"] == 15.0);
@@ -112,7 +112,7 @@ TEST_SUITE("output") {
     CHECK(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, mom.data()) >= 0);
     H5Dclose(d);
     H5Fclose(f);
-    CHECK(mom[3 * 7 + 2] == r.final_r[7 * AW_STATE_REALS + 5]);
+    CHECK(mom[3 * 7 + 2] == r.reals("final_states")[7 * AW_STATE_REALS + 5]);
     CHECK_FALSE(has_temporaries(dir));
     CHECK_FALSE(fs::exists(dir + ".partial-" + std::to_string(::getpid())));
   }

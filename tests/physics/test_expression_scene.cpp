@@ -8,7 +8,7 @@
 
 #include "arnoldweb/arnoldweb.hpp"
 #include "expression_cases.hpp"
-#include "plan/kernel_params.hpp"
+#include "plan/plan_params.hpp"
 #include "support.hpp"
 
 using namespace arnoldweb;

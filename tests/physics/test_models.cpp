@@ -12,83 +12,48 @@
 #include <string>
 #include <vector>
 
-#include "aw_cpp_std.h"
 #include "aw_params.h"
-#include "physics/models.hpp"
-#include "plan/kernel_params.hpp"
+#include "physics/model_table.hpp"
 #include "support.hpp"
 
-// The device core's models compiled here in double, one namespace each (as
-// lib/src/physics/models.cpp does).
-namespace tm_base {
-#include "aw_math.h"
-#include "aw_state.h"
-#include "models/aw_kinetic.h"
-}  // namespace tm_base
-namespace tm_seibert2011 {
-using namespace tm_base;
-#include "models/aw_seibert2011.h"
-}  // namespace tm_seibert2011
-namespace tm_fgl {
-using namespace tm_base;
-#include "models/aw_fgl.h"
-}  // namespace tm_fgl
-namespace tm_fourier {
-using namespace tm_base;
-#include "models/aw_fourier.h"
-}  // namespace tm_fourier
-
 using namespace arnoldweb;
+using detail::HostModel;
+using detail::ModelDescriptor;
+using detail::RealParams;
 
 namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925;
 
-// One model's functions at a point (u in turns).
-struct ModelFns {
-  std::string name;
-  double (*potential)(double, double, double, const tm_base::aw_rparams*);
-  void (*force_hessian)(tm_base::aw_lstate*, const tm_base::aw_rparams*, double*);
-  void (*force)(tm_base::aw_lstate*, const tm_base::aw_rparams*);
-  double (*kinetic)(double, double, double, const tm_base::aw_rparams*);
-  double (*speed)(double, double, double, double, const tm_base::aw_rparams*, double*);
-  void (*kinetic_diag)(const tm_base::aw_rparams*, double*);
-};
-
-// The kernel parameters a scene gives a model (the host's model table fills them).
-tm_base::aw_rparams params_of(const std::string& kind, const std::vector<std::string>& sets) {
-  std::vector<std::string> all = {awtest::set("model.kind", kind)};
-  all.insert(all.end(), sets.begin(), sets.end());
-  const Scene s = awtest::scene_from("", all, "<models>");
-  detail::RealParams rp{};
-  detail::model_of(s).fill(s, rp);
-  tm_base::aw_rparams out;
-  static_assert(sizeof out == sizeof rp, "one layout");
-  std::memcpy(&out, &rp, sizeof out);
-  return out;
-}
-
-const std::vector<std::pair<ModelFns, tm_base::aw_rparams>>& cases() {
-  static const std::vector<std::pair<ModelFns, tm_base::aw_rparams>> c = {
-      {{"seibert2011", tm_seibert2011::aw_model_potential, tm_seibert2011::aw_model_force_hessian,
-        tm_seibert2011::aw_model_force, tm_seibert2011::aw_model_kinetic, tm_seibert2011::aw_model_speed,
-        tm_seibert2011::aw_model_kinetic_diag},
-       params_of("seibert2011", {})},
-      {{"fgl", tm_fgl::aw_model_potential, tm_fgl::aw_model_force_hessian, tm_fgl::aw_model_force,
-        tm_fgl::aw_model_kinetic, tm_fgl::aw_model_speed, tm_fgl::aw_model_kinetic_diag},
-       params_of("fgl", {"model.epsilon=0.04"})},
-      {{"fourier", tm_fourier::aw_model_potential, tm_fourier::aw_model_force_hessian, tm_fourier::aw_model_force,
-        tm_fourier::aw_model_kinetic, tm_fourier::aw_model_speed, tm_fourier::aw_model_kinetic_diag},
-       params_of("fourier", {"model.harmonics=[[1, 0, 0, 0.7, 0.3], [2, -1, 3, -0.2, 1.1], [0, 1, 1, 0.45, -2]]",
-                             "model.kinetic_a=[1, 0.5, 0]", "model.kinetic_b=[0, 0.25, 1]"})},
+// Values for keys that models may declare, richer than their defaults (a key no
+// model declares is never used; a model's other keys keep their defaults).
+const detail::ModelValues& test_values() {
+  static const detail::ModelValues v = {
+      {"model.epsilon", {0.04}},
+      {"model.harmonics", {1, 0, 0, 0.7, 0.3, 2, -1, 3, -0.2, 1.1, 0, 1, 1, 0.45, -2}},
+      {"model.kinetic_a", {1, 0.5, 0}},
+      {"model.kinetic_b", {0, 0.25, 1}},
   };
-  return c;
+  return v;
 }
 
-tm_base::aw_lstate at(double ux, double uy, double uz) {
-  tm_base::aw_lstate s{};
-  s.ux = ux, s.uy = uy, s.uz = uz;
-  return s;
+// Every built-in model of the table with the test values of its keys.
+struct ModelCase {
+  const ModelDescriptor* model;
+  RealParams rp{};
+};
+const std::vector<ModelCase>& cases() {
+  static const std::vector<ModelCase> c = [] {
+    std::vector<ModelCase> out;
+    for (const ModelDescriptor& m : detail::models()) {
+      if (!m.host) continue;  // an expression model: tests/physics/test_expression_*
+      ModelCase mc{&m};
+      m.fill(test_values(), mc.rp);
+      out.push_back(mc);
+    }
+    return out;
+  }();
+  return c;
 }
 
 // Central fourth-order difference of f along one coordinate, per radian.
@@ -106,82 +71,113 @@ double derivative(F f, const std::array<double, 3>& u, int axis) {
 }  // namespace
 
 TEST_SUITE("models") {
-  TEST_CASE("every model: force = -grad V and the Hessian = d^2V (finite differences), the same force from both") {
+  TEST_CASE("the table: every built-in model has its host code, a kinetic form, bounds and wave vectors") {
+    REQUIRE(cases().size() >= 3);
+    for (const ModelCase& mc : cases()) {
+      const ModelDescriptor& m = *mc.model;
+      CAPTURE(m.name);
+      CHECK(detail::find_model(m.name) == &m);
+      CHECK(!m.title.empty());
+      CHECK(!m.formula.empty());
+      REQUIRE(m.kinetic);
+      REQUIRE(m.v_range);
+      REQUIRE(m.hessian_bound);
+      REQUIRE(m.wave_vectors);
+      const auto v = m.v_range(mc.rp);
+      CHECK(v[0] <= v[1]);
+      CHECK(m.hessian_bound(mc.rp) >= 0);
+      CHECK(!m.wave_vectors(mc.rp).empty());
+      for (const auto& p : m.parameters) {
+        CAPTURE(p.key);
+        CHECK(p.key.rfind("model.", 0) == 0);
+        CHECK(!p.help.empty());
+        CHECK(!p.default_value.empty());
+        if (p.check) CHECK(p.check(p.default_value).empty());  // the default passes its own checks
+      }
+    }
+  }
+
+  TEST_CASE("every model: force = -grad V and the Hessian = d^2V (finite differences), the same force from both; V within its range") {
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> uni(-0.5, 0.5);
-    for (const auto& model_case : cases()) {
-      const auto& m = model_case.first;  // (not a structured binding: clang 14 cannot capture those)
-      const auto& rp = model_case.second;
-      CAPTURE(m.name);
+    for (const ModelCase& mc : cases()) {
+      const HostModel& m = *mc.model->host;
+      const RealParams& rp = mc.rp;
+      CAPTURE(mc.model->name);
+      const auto range = mc.model->v_range(rp);
       double worst_f = 0, worst_h = 0;
       for (int t = 0; t < 200; ++t) {
         const std::array<double, 3> u = {uni(rng), uni(rng), uni(rng)};
-        auto V = [&, &m = m, &rp = rp](const std::array<double, 3>& v) { return m.potential(v[0], v[1], v[2], &rp); };
-        tm_base::aw_lstate s = at(u[0], u[1], u[2]), s2 = s;
-        double hess[6];
-        m.force_hessian(&s, &rp, hess);
-        m.force(&s2, &rp);
-        CHECK(s.fx == s2.fx);  // bit for bit: the same operations
-        CHECK(s.fy == s2.fy);
-        CHECK(s.fz == s2.fz);
-        const double f[3] = {s.fx, s.fy, s.fz};
+        auto V = [&](const std::array<double, 3>& v) { return m.potential(v[0], v[1], v[2], rp); };
+        const double here = V(u);
+        CHECK(here >= range[0] - 1e-12);
+        CHECK(here <= range[1] + 1e-12);
+        double f[3], f2[3], hess[6];
+        m.force_hessian(u.data(), rp, f, hess);
+        m.force(u.data(), rp, f2);
+        for (int i = 0; i < 3; ++i) CHECK(f[i] == f2[i]);  // bit for bit: the same operations
         for (int i = 0; i < 3; ++i) worst_f = std::max(worst_f, std::fabs(f[i] + derivative(V, u, i)));
         // the Hessian as -dF_j/dx_i
         const int index[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
         for (int j = 0; j < 3; ++j) {
-          auto Fj = [&, &m = m, &rp = rp](const std::array<double, 3>& v) {
-            tm_base::aw_lstate q = at(v[0], v[1], v[2]);
-            m.force(&q, &rp);
-            return j == 0 ? q.fx : j == 1 ? q.fy : q.fz;
+          auto Fj = [&](const std::array<double, 3>& v) {
+            double q[3];
+            m.force(v.data(), rp, q);
+            return q[j];
           };
           for (int i = 0; i < 3; ++i) worst_h = std::max(worst_h, std::fabs(hess[index[i][j]] + derivative(Fj, u, i)));
         }
       }
       std::printf("models: %-12s max |F + dV/dx| %.2e, max |Hess - d^2V| %.2e (200 points, 4th-order differences)\n",
-                  m.name.c_str(), worst_f, worst_h);
+                  mc.model->name.c_str(), worst_f, worst_h);
       CHECK(worst_f < 1e-10);
       CHECK(worst_h < 1e-9);
     }
   }
 
   TEST_CASE("fourier with the paper's six harmonics agrees with seibert2011 to round-off in V, force and Hessian") {
-    const tm_base::aw_rparams paper = params_of("fourier", {});  // the default harmonics
-    const tm_base::aw_rparams none{};
+    const ModelDescriptor* fourier = detail::find_model("fourier");
+    const ModelDescriptor* paper = detail::find_model("seibert2011");
+    REQUIRE(fourier);
+    REQUIRE(paper);
+    RealParams six{}, none{};
+    fourier->fill({}, six);  // the default harmonics
+    paper->fill({}, none);
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> uni(-0.5, 0.5);
     double worst = 0;
     for (int t = 0; t < 10000; ++t) {
-      const double ux = uni(rng), uy = uni(rng), uz = uni(rng);
-      worst = std::max(worst, std::fabs(tm_fourier::aw_model_potential(ux, uy, uz, &paper) -
-                                        tm_seibert2011::aw_model_potential(ux, uy, uz, &none)));
-      tm_base::aw_lstate a = at(ux, uy, uz), b = a;
-      double ha[6], hb[6];
-      tm_fourier::aw_model_force_hessian(&a, &paper, ha);
-      tm_seibert2011::aw_model_force_hessian(&b, &none, hb);
-      worst = std::max({worst, std::fabs(a.fx - b.fx), std::fabs(a.fy - b.fy), std::fabs(a.fz - b.fz)});
+      const double u[3] = {uni(rng), uni(rng), uni(rng)};
+      worst = std::max(worst, std::fabs(fourier->host->potential(u[0], u[1], u[2], six) -
+                                        paper->host->potential(u[0], u[1], u[2], none)));
+      double fa[3], fb[3], ha[6], hb[6];
+      fourier->host->force_hessian(u, six, fa, ha);
+      paper->host->force_hessian(u, none, fb, hb);
+      for (int i = 0; i < 3; ++i) worst = std::max(worst, std::fabs(fa[i] - fb[i]));
       for (int i = 0; i < 6; ++i) worst = std::max(worst, std::fabs(ha[i] - hb[i]));
     }
     std::printf("models: fourier (6 harmonics) vs seibert2011: max difference %.2e over 10000 points\n", worst);
     CHECK(worst < 1e-14);
     CHECK(worst > 0);  // different operations: equal to round-off, not bit for bit
-    // and the same kinetic energy, drift diagonal and speed
+    // and the same kinetic energy and drift diagonal
     double a[3];
-    tm_fourier::aw_model_kinetic_diag(&paper, a);
+    fourier->host->kinetic_diag(six, a);
     CHECK(a[0] == 1.0);
     CHECK(a[1] == 1.0);
     CHECK(a[2] == 1.0);
-    CHECK(tm_fourier::aw_model_kinetic(0.3, -1.2, 2.5, &paper) == doctest::Approx(0.5 * (0.09 + 1.44 + 6.25)).epsilon(1e-15));
+    const double p[3] = {0.3, -1.2, 2.5};
+    CHECK(fourier->host->kinetic(p, six) == doctest::Approx(0.5 * (0.09 + 1.44 + 6.25)).epsilon(1e-15));
   }
 
   TEST_CASE("the general kinetic form: the speed puts the state on T(s n) = ke at the first crossing, or says none") {
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> uni(-1.0, 1.0);
-    for (const auto& model_case : cases()) {
-      const auto& m = model_case.first;  // (not a structured binding: clang 14 cannot capture those)
-      const auto& rp = model_case.second;
-      CAPTURE(m.name);
+    for (const ModelCase& mc : cases()) {
+      const HostModel& m = *mc.model->host;
+      const RealParams& rp = mc.rp;
+      CAPTURE(mc.model->name);
       double diag[3];
-      m.kinetic_diag(&rp, diag);
+      m.kinetic_diag(rp, diag);
       int reached = 0, refused = 0;
       for (int t = 0; t < 20000; ++t) {
         double n[3] = {uni(rng), uni(rng), uni(rng)};
@@ -189,16 +185,17 @@ TEST_SUITE("models") {
         if (r < 1e-3) continue;
         for (double& c : n) c /= r;
         const double ke = 2 * uni(rng);
-        double ok = 0;
-        const double s = m.speed(ke, n[0], n[1], n[2], &rp, &ok);
+        double s = 0;
+        const bool ok = m.speed(ke, n, rp, s);
         // T along the ray is A s^2/2 + B s (A from the diagonal, B = T(n) - A/2)
         const double A = diag[0] * n[0] * n[0] + diag[1] * n[1] * n[1] + diag[2] * n[2] * n[2];
-        const double B = m.kinetic(n[0], n[1], n[2], &rp) - 0.5 * A;
-        if (ok != 0) {
+        const double B = m.kinetic(n, rp) - 0.5 * A;
+        if (ok) {
           ++reached;
           REQUIRE(s > 0);
           // to round-off of the terms (the linear and quadratic parts may cancel)
-          const double t = m.kinetic(s * n[0], s * n[1], s * n[2], &rp);
+          const double sn[3] = {s * n[0], s * n[1], s * n[2]};
+          const double t = m.kinetic(sn, rp);
           CHECK(std::fabs(t - ke) <= 1e-13 * (0.5 * A * s * s + std::fabs(B) * s + std::fabs(ke)));
           // no crossing before s: the smaller root, where both are positive
           const double other = A > 0 ? -2 * B / A - s : -1;  // the sum of the roots is -2B/A
@@ -212,19 +209,23 @@ TEST_SUITE("models") {
           CHECK(none);
         }
       }
-      std::printf("models: %-12s speed: %d reached, %d without a crossing\n", m.name.c_str(), reached, refused);
+      std::printf("models: %-12s speed: %d reached, %d without a crossing\n", mc.model->name.c_str(), reached, refused);
       CHECK(reached > 0);
     }
   }
 
-  TEST_CASE("the kinetic diagonal a_i: seibert2011 (1, 1, 1), fgl (1, 1, 0), fourier model.kinetic_a") {
-    double a[3];
-    tm_seibert2011::aw_model_kinetic_diag(&cases()[0].second, a);
-    CHECK((a[0] == 1 && a[1] == 1 && a[2] == 1));
-    tm_fgl::aw_model_kinetic_diag(&cases()[1].second, a);
-    CHECK((a[0] == 1 && a[1] == 1 && a[2] == 0));
-    tm_fourier::aw_model_kinetic_diag(&cases()[2].second, a);
-    CHECK((a[0] == 1 && a[1] == 0.5 && a[2] == 0));
+  TEST_CASE("every model: the device's kinetic diagonal and T are the descriptor's kinetic form") {
+    for (const ModelCase& mc : cases()) {
+      CAPTURE(mc.model->name);
+      const auto k = mc.model->kinetic(mc.rp);  // a_x, a_y, a_z, b_x, b_y, b_z
+      double a[3];
+      mc.model->host->kinetic_diag(mc.rp, a);
+      for (int i = 0; i < 3; ++i) CHECK(a[i] == k[static_cast<std::size_t>(i)]);
+      const double p[3] = {0.7, -1.3, 0.4};
+      double t = 0;
+      for (int i = 0; i < 3; ++i) t += 0.5 * k[static_cast<std::size_t>(i)] * p[i] * p[i] + k[static_cast<std::size_t>(3 + i)] * p[i];
+      CHECK(mc.model->host->kinetic(p, mc.rp) == doctest::Approx(t).epsilon(1e-14));
+    }
   }
 }
 
@@ -258,12 +259,12 @@ Scene fgl_scene(const std::string& method, double step, double duration, const s
 double rms_distance(const Result& a, const Result& b) {
   double sum = 0;
   for (std::size_t i = 0; i < kFglTrajectories; ++i) {
-    REQUIRE(a.final_i[i * AW_STATE_INTS + 3] == AW_STATUS_OK);
+    REQUIRE(a.ints("final_states")[i * AW_STATE_INTS + 3] == AW_STATUS_OK);
     for (int c = 0; c < 3; ++c) {
-      const double turns = static_cast<double>(a.final_i[i * AW_STATE_INTS + c] - b.final_i[i * AW_STATE_INTS + c]) +
-                           (a.final_r[i * AW_STATE_REALS + c] - b.final_r[i * AW_STATE_REALS + c]);
+      const double turns = static_cast<double>(a.ints("final_states")[i * AW_STATE_INTS + c] - b.ints("final_states")[i * AW_STATE_INTS + c]) +
+                           (a.reals("final_states")[i * AW_STATE_REALS + c] - b.reals("final_states")[i * AW_STATE_REALS + c]);
       const double dx = kTwoPi * turns;
-      const double dp = a.final_r[i * AW_STATE_REALS + 3 + c] - b.final_r[i * AW_STATE_REALS + 3 + c];
+      const double dp = a.reals("final_states")[i * AW_STATE_REALS + 3 + c] - b.reals("final_states")[i * AW_STATE_REALS + 3 + c];
       sum += dx * dx + dp * dp;
     }
   }

@@ -74,8 +74,8 @@ Scene order_scene(const std::string& method, int steps_per_t, const std::vector<
 
 Result run_order(const std::string& device, const std::string& method, int steps_per_t) {
   const Result r = awtest::run_on(device, make_plan(order_scene(method, steps_per_t)));
-  REQUIRE(r.final_r.size() == kTrajectories * AW_STATE_REALS);
-  REQUIRE(r.final_i.size() == kTrajectories * AW_STATE_INTS);
+  REQUIRE(r.reals("final_states").size() == kTrajectories * AW_STATE_REALS);
+  REQUIRE(r.ints("final_states").size() == kTrajectories * AW_STATE_INTS);
   return r;
 }
 
@@ -84,14 +84,14 @@ Result run_order(const std::string& device, const std::string& method, int steps
 double rms_distance(const Result& a, const Result& b) {
   double sum = 0;
   for (std::size_t i = 0; i < kTrajectories; ++i) {
-    REQUIRE(a.final_i[i * AW_STATE_INTS + 3] == AW_STATUS_OK);
+    REQUIRE(a.ints("final_states")[i * AW_STATE_INTS + 3] == AW_STATUS_OK);
     double d2 = 0;
     for (int c = 0; c < 3; ++c) {
       const double turns =
-          static_cast<double>(a.final_i[i * AW_STATE_INTS + c] - b.final_i[i * AW_STATE_INTS + c]) +
-          (a.final_r[i * AW_STATE_REALS + c] - b.final_r[i * AW_STATE_REALS + c]);
+          static_cast<double>(a.ints("final_states")[i * AW_STATE_INTS + c] - b.ints("final_states")[i * AW_STATE_INTS + c]) +
+          (a.reals("final_states")[i * AW_STATE_REALS + c] - b.reals("final_states")[i * AW_STATE_REALS + c]);
       const double dx = 2 * M_PI * turns;
-      const double dp = a.final_r[i * AW_STATE_REALS + 3 + c] - b.final_r[i * AW_STATE_REALS + 3 + c];
+      const double dp = a.reals("final_states")[i * AW_STATE_REALS + 3 + c] - b.reals("final_states")[i * AW_STATE_REALS + 3 + c];
       d2 += dx * dx + dp * dp;
     }
     sum += d2;
@@ -172,14 +172,14 @@ TEST_SUITE("order") {
       const Plan plan = make_plan(s);
       // the reference: the core compiled in this test without vectors (tests/support/scalar_core.hpp)
       const Result ref = awtest::run_scalar_core(plan);
-      REQUIRE(ref.final_r.size() == kTrajectories * AW_STATE_REALS);
+      REQUIRE(ref.reals("final_states").size() == kTrajectories * AW_STATE_REALS);
       REQUIRE_FALSE(awtest::devices_under_test().empty());
       for (const auto& dev : awtest::devices_under_test()) {
         CAPTURE(dev.id);
         const Result r = awtest::run_on(dev.id, plan);
-        const long d = awtest::first_difference(r.final_r, ref.final_r);
+        const long d = awtest::first_difference(r.reals("final_states"), ref.reals("final_states"));
         CHECK_MESSAGE(d == -1, "first differing state value at trajectory " << d / AW_STATE_REALS);
-        CHECK(awtest::first_difference(r.final_i, ref.final_i) == -1);
+        CHECK(awtest::first_difference(r.ints("final_states"), ref.ints("final_states")) == -1);
         CHECK(r.energy.max == ref.energy.max);
         CHECK(r.energy.log_hist == ref.energy.log_hist);
         CHECK(digest_map(r) == digest_map(ref));

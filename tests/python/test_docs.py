@@ -19,6 +19,10 @@ def test_every_public_name_is_documented():
             assert (obj.__doc__ or "").strip(), name
 
 
-def test_readme_names_pip_install(repo):
+def test_readme_and_page_start_with_the_wheel(repo):
+    wheel = r"^pip install \S*arnoldweb-[0-9.]+-cp3\d+-cp3\d+-manylinux_\d+_\d+_x86_64\.whl"
     readme = (repo / "README.md").read_text(encoding="utf-8")
-    assert re.search(r"^pip install \.", readme, re.M)
+    assert re.search(wheel, readme, re.M)
+    page = (repo / "docs" / "python.md").read_text(encoding="utf-8")
+    install = page.index("## Install")
+    assert re.search(wheel, page[install:], re.M) and page.index("pip install arnoldweb-") < page.index("## The Figure")

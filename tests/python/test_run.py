@@ -16,6 +16,17 @@ def test_done_when_command(repo):
     assert r.map.sum() == r.binned == r.completed == 2000
 
 
+def test_a_device_list_gives_one_device_bits(small_scene):
+    opencl = [d["id"] for d in aw.devices() if d["id"].startswith("opencl:")]
+    if not opencl:
+        pytest.skip("no OpenCL device (PoCL) beside the cpu backend")
+    one = aw.run(small_scene, device="cpu")
+    both = aw.run(small_scene, device="cpu," + opencl[0])
+    assert np.array_equal(one.map, both.map)
+    assert one.digests == both.digests
+    assert both.device["id"] == "cpu," + opencl[0]
+
+
 def test_map_dtype_shape_and_ring_order(small_scene):
     r = aw.run(small_scene)
     assert r.nside == 16 and r.ordering == "RING"
@@ -120,7 +131,7 @@ def test_exception_in_callback_stops_with_partial_result(small_scene):
 
 
 def test_gil_is_released_while_computing(small_scene):
-    small_scene.set("ensemble.trajectories", 20000)
+    small_scene.set("ensemble.trajectories", 100000)  # long enough on a fast CPU (20000: 0.09 s on AVX-512)
     ticks = []
     stop = threading.Event()
 

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "arnoldweb/arnoldweb.hpp"
+#include "run_outputs.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -28,25 +29,10 @@ const std::string kScene =
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-nlohmann::json summary_of(const std::string& dir) {
-  std::ifstream in(dir + "/summary.json");
-  return nlohmann::json::parse(in);
-}
-
 std::vector<std::string> checkpoints_beside(const std::string& out) {
   std::vector<std::string> found;
   for (const auto& f : arnoldweb::find_checkpoints(out)) found.push_back(f.staging_dir);
   return found;
-}
-
-void check_same_digests(const std::string& a, const std::string& b) {
-  const auto ja = summary_of(a), jb = summary_of(b);
-  CHECK(ja["digests"] == jb["digests"]);
-  CHECK(ja["completed"] == jb["completed"]);
-  CHECK(ja["binned"] == jb["binned"]);
-  CHECK(ja["energy_error"]["max"] == jb["energy_error"]["max"]);
-  CHECK(ja["energy_error"]["mean"] == jb["energy_error"]["mean"]);
-  CHECK(jb["interrupted"] == false);
 }
 
 }  // namespace
@@ -88,10 +74,10 @@ TEST_SUITE("checkpoint") {
         if (rc == 0) ++resumed;
         else REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", out}) == 0);
       }
-      check_same_digests(root + "/plain", out);
+      awtest::check_same_digests(root + "/plain", out);
       CHECK(checkpoints_beside(out).empty());
       // nothing but the listed outputs is left in the directory (no checkpoint temporaries)
-      const auto j = summary_of(out);
+      const auto j = awtest::summary_of(out);
       std::size_t files = 0;
       for (const auto& e : fs::recursive_directory_iterator(out)) files += e.is_regular_file();
       CHECK(files == j["files"].size() + 1);
@@ -153,13 +139,13 @@ TEST_SUITE("checkpoint") {
     CAPTURE(device);
     CHECK(awtest::run_cli({"resume", out, "--quiet", "--device", device}, &text) == 0);
     CAPTURE(text);
-    check_same_digests(root + "/plain", out);
+    awtest::check_same_digests(root + "/plain", out);
     CHECK(checkpoints_beside(out).empty());
     CHECK_FALSE(fs::exists(out + "/.map.h5.tmp-999999-0"));
     CHECK_FALSE(fs::exists(out + "/.checkpoint.awck.tmp-999999-3"));
     std::size_t files = 0;
     for (const auto& e : fs::recursive_directory_iterator(out)) files += e.is_regular_file();
-    CHECK(files == summary_of(out)["files"].size() + 1);
+    CHECK(files == awtest::summary_of(out)["files"].size() + 1);
     // the directory is an ordinary arnoldweb output: --force may replace it
     CHECK(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", out, "--force", "--set",
                            "run.checkpoint_every=\"off\""}) == 0);

@@ -32,8 +32,8 @@ void check_same(const arnoldweb::Result& a, const arnoldweb::Result& b) {
   CHECK(a.binned == b.binned);
   CHECK(a.flagged() == b.flagged());
   CHECK(arnoldweb::digest_map(a) == arnoldweb::digest_map(b));
-  CHECK(arnoldweb::digest_initial_states(a) == arnoldweb::digest_initial_states(b));
-  CHECK(arnoldweb::digest_final_states(a) == arnoldweb::digest_final_states(b));
+  CHECK(arnoldweb::digest_records(a, "initial_states") == arnoldweb::digest_records(b, "initial_states"));
+  CHECK(arnoldweb::digest_records(a, "final_states") == arnoldweb::digest_records(b, "final_states"));
   CHECK(a.zoom == b.zoom);
   CHECK(a.energy.log_hist == b.energy.log_hist);
   CHECK(a.energy.max == b.energy.max);  // exact

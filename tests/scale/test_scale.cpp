@@ -18,6 +18,7 @@
 
 #include "arnoldweb/arnoldweb.hpp"
 #include "arnoldweb/cluster.hpp"
+#include "run_outputs.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -34,8 +35,8 @@ void check_same(const arnoldweb::Result& a, const arnoldweb::Result& b) {
   CHECK(a.completed == b.completed);
   CHECK(a.binned == b.binned);
   CHECK(arnoldweb::digest_map(a) == arnoldweb::digest_map(b));
-  CHECK(arnoldweb::digest_initial_states(a) == arnoldweb::digest_initial_states(b));
-  CHECK(arnoldweb::digest_final_states(a) == arnoldweb::digest_final_states(b));
+  CHECK(arnoldweb::digest_records(a, "initial_states") == arnoldweb::digest_records(b, "initial_states"));
+  CHECK(arnoldweb::digest_records(a, "final_states") == arnoldweb::digest_records(b, "final_states"));
   CHECK(a.zoom == b.zoom);
   CHECK(a.energy.log_hist == b.energy.log_hist);
   CHECK(a.energy.max == b.energy.max);
@@ -48,26 +49,6 @@ class Keep final : public arnoldweb::CheckpointSink {
   void save(const std::string& image) override { images.push_back(image); }
   std::vector<std::string> images;
 };
-
-std::string opencl_device() {
-  for (const auto& d : arnoldweb::list_devices())
-    if (d.backend == "opencl") return d.id;
-  return "";
-}
-
-nlohmann::json summary_of(const std::string& dir) {
-  std::ifstream in(dir + "/summary.json");
-  return nlohmann::json::parse(in);
-}
-
-void check_same_digests(const std::string& a, const std::string& b) {
-  const auto ja = summary_of(a), jb = summary_of(b);
-  CHECK(ja["digests"] == jb["digests"]);
-  CHECK(ja["completed"] == jb["completed"]);
-  CHECK(ja["binned"] == jb["binned"]);
-  CHECK(ja["energy_error"]["max"] == jb["energy_error"]["max"]);
-  CHECK(jb["interrupted"] == false);
-}
 
 std::string mpirun_path() {
   for (const char* p : {"/usr/bin/mpirun", "/usr/local/bin/mpirun"})
@@ -127,7 +108,7 @@ TEST_SUITE("scale") {
     const arnoldweb::Result plain = arnoldweb::run(job.main(), *plain_dev);
     std::vector<std::unique_ptr<arnoldweb::Backend>> owned;
     std::vector<std::string> ids = {"cpu", "cpu", "cpu"};
-    if (!opencl_device().empty()) ids.push_back(opencl_device());
+    if (!awtest::first_opencl().empty()) ids.push_back(awtest::first_opencl());
     for (const auto& id : ids) owned.push_back(arnoldweb::open_backend(id));
     for (std::size_t n = 1; n <= owned.size(); ++n) {
       CAPTURE(n);
@@ -208,7 +189,7 @@ TEST_SUITE("scale") {
       explicit Failing(std::unique_ptr<arnoldweb::Backend> b) : b_(std::move(b)) {}
       const arnoldweb::DeviceInfo& info() const override { return b_->info(); }
       void prepare(const arnoldweb::Plan& p, std::uint64_t m) override { b_->prepare(p, m); }
-      void run_chunk(std::uint64_t, std::uint64_t, arnoldweb::ChunkOutput&) override {
+      void run_chunk(const arnoldweb::ChunkWork&, arnoldweb::ChunkOutput&) override {
         throw arnoldweb::DeviceError(b_->info().id, "", 0, "the device was lost");
       }
       std::vector<std::uint64_t> read_histograms() override { return b_->read_histograms(); }
@@ -233,7 +214,7 @@ TEST_SUITE("mpi") {
     std::ofstream(scene) << kScene;
     REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", root + "/plain"}) == 0);
     std::vector<std::string> devices = {"cpu"};
-    if (!opencl_device().empty()) devices.push_back(opencl_device());
+    if (!awtest::first_opencl().empty()) devices.push_back(awtest::first_opencl());
     for (const auto& device : devices) {
       for (int n = 1; n <= 3; ++n) {
         CAPTURE(device);
@@ -243,7 +224,7 @@ TEST_SUITE("mpi") {
         const int rc = awtest::run_cli({"run", scene, "--device", device, "--out", out}, &text, mpirun(n));
         CAPTURE(text);
         REQUIRE(rc == 0);
-        check_same_digests(root + "/plain", out);
+        awtest::check_same_digests(root + "/plain", out);
         // one progress stream (rank 0's totals) and one report
         CHECK(std::count(text.begin(), text.end(), '\n') < 40);
         if (n > 1) CHECK(text.find("ranks        " + std::to_string(n)) != std::string::npos);
@@ -256,7 +237,7 @@ TEST_SUITE("mpi") {
       CHECK(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu," + devices[1], "--out", out}, &text, mpirun(2)) ==
             0);
       CAPTURE(text);
-      check_same_digests(root + "/plain", out);
+      awtest::check_same_digests(root + "/plain", out);
     }
   }
 
@@ -301,7 +282,7 @@ TEST_SUITE("mpi") {
         if (rc == 0) ++resumed;
         else REQUIRE(awtest::run_cli(args(out)) == 0);
       }
-      check_same_digests(root + "/plain", out);
+      awtest::check_same_digests(root + "/plain", out);
       CHECK(arnoldweb::find_checkpoints(out).empty());
     }
     CHECK(resumed >= 1);

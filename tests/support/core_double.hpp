@@ -8,7 +8,7 @@ namespace core_d {
 #include "aw_ensemble.h"
 }  // namespace core_d
 
-#include "plan/kernel_params.hpp"
+#include "plan/plan_params.hpp"
 
 namespace core_d {
 

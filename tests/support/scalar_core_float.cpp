@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "core_float.hpp"
-#include "plan/kernel_params.hpp"
+#include "plan/plan_params.hpp"
 #include "scalar_core.hpp"
 #include "scalar_core_fold.hpp"
 

@@ -10,6 +10,7 @@
 #include "arnoldweb/plan.hpp"
 #include "arnoldweb/result.hpp"
 #include "aw_params.h"
+#include "run/reduction.hpp"
 
 namespace awtest::scalar_detail {
 
@@ -21,13 +22,10 @@ arnoldweb::Result run(const arnoldweb::Plan& plan, const RParams* rp, const IPar
   const std::uint32_t features = plan.kernel.features;
   std::vector<std::uint32_t> hist(std::max<std::uint64_t>(plan.hist_size, 1), 0);
   std::vector<std::uint32_t> counters(AW_C_COUNT, 0);
-  std::vector<Real> initial_r((features & AW_F_INITIAL_STATES) ? n * AW_STATE_REALS : 0);
-  std::vector<Real> final_r((features & AW_F_FINAL_STATES) ? n * AW_STATE_REALS : 0);
-  std::vector<std::int64_t> final_i((features & AW_F_FINAL_STATES) ? n * AW_STATE_INTS : 0);
-  std::vector<Real> indicators((features & AW_F_TANGENT) ? n * AW_IND_REALS : 0);
-  Outputs out = {hist.data(), counters.data(), initial_r.empty() ? nullptr : initial_r.data(),
-                 final_r.empty() ? nullptr : final_r.data(), final_i.empty() ? nullptr : final_i.data(),
-                 indicators.empty() ? nullptr : indicators.data()};
+  std::vector<Real> rec_r(n * static_cast<std::uint64_t>(ip->rec_reals));
+  std::vector<std::int64_t> rec_i(n * static_cast<std::uint64_t>(ip->rec_ints));
+  Outputs out = {hist.data(), counters.data(), rec_r.empty() ? nullptr : rec_r.data(),
+                 rec_i.empty() ? nullptr : rec_i.data()};
   const Config cfg = {features, plan.kernel.stages, plan.kernel.kick_first ? 1 : 0, plan.kernel.initial,
                       plan.kernel.gradient ? 1 : 0};
   // One trajectory per call; the calls share the histograms and counters
@@ -40,7 +38,8 @@ arnoldweb::Result run(const arnoldweb::Plan& plan, const RParams* rp, const IPar
 #pragma omp parallel for schedule(dynamic, 64)
   for (std::int64_t t = 0; t < count; ++t) {
     const Lanes l = {static_cast<std::uint64_t>(t), n, 0};
-    item(cfg, l, rp, ip, out, &item_max[static_cast<std::size_t>(t)], &item_sum[static_cast<std::size_t>(t)]);
+    item(cfg, l, std::int64_t{0}, plan.windows * plan.segments_per_window, rp, ip, out,
+         &item_max[static_cast<std::size_t>(t)], &item_sum[static_cast<std::size_t>(t)]);
   }
   double emax = 0, esum = 0;
   for (std::uint64_t t = 0; t < n; ++t) {
@@ -75,10 +74,8 @@ arnoldweb::Result run(const arnoldweb::Plan& plan, const RParams* rp, const IPar
     r.zoom.assign(hist.begin() + static_cast<std::ptrdiff_t>(plan.frames * npix),
                   hist.begin() + static_cast<std::ptrdiff_t>(plan.hist_size));
   }
-  r.initial_r.assign(initial_r.begin(), initial_r.end());
-  r.final_r.assign(final_r.begin(), final_r.end());
-  r.final_i = final_i;
-  r.indicators.assign(indicators.begin(), indicators.end());
+  r.records = arnoldweb::detail::empty_records(plan);
+  arnoldweb::detail::append_records(plan, std::vector<double>(rec_r.begin(), rec_r.end()), rec_i, r.records);
   r.chunks = {n};
   return r;
 }

@@ -36,7 +36,8 @@ AW_FN void aw_fx_begin(aw_config cfg, aw_fx* fx, aw_lstate* s, lreal accepted, a
   if (AW_HAS(AW_F_TEST_INJECT)) aw_inject(s, l, rp, ip);
   if (AW_HAS(AW_F_INITIAL_STATES))
     for (int j = 0; j < AW_LANES; ++j)
-      if (AW_LANE_ACTIVE(l, j)) aw_store_states(out.initial_r, l.first + (aw_u64)j - l.chunk_first, s, j);
+      if (AW_LANE_ACTIVE(l, j))
+        aw_store_state_reals(aw_record_r(out, ip, AW_OUT_INITIAL_STATE, AW_LANE_RECORD(l, j)), s, j);
   fx->e0 = AW_LSPLAT(AW_R(0.0));
   fx->emax = AW_LSPLAT(AW_R(0.0));
   fx->over = AW_LSPLAT(AW_R(0.0));
@@ -100,7 +101,7 @@ AW_FN void aw_fx_window_end(aw_config cfg, aw_fx* fx, aw_i64 w, lreal dx, lreal 
  * in the histogram and, for binned lanes, in this item's (max, sum), which
  * the caller reduces over the work-group; the final state records. */
 AW_FN void aw_fx_finish(aw_config cfg, aw_fx* fx, const aw_lstate* s, aw_lanes l, aw_outputs out, real* emax,
-                        real* esum, AW_CONSTANT aw_rparams* rp) {
+                        real* esum, AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip) {
   real amax[AW_LANES];
   AW_STORE_LANES(fx->emax, amax);
   *emax = AW_R(0.0);
@@ -116,9 +117,13 @@ AW_FN void aw_fx_finish(aw_config cfg, aw_fx* fx, const aw_lstate* s, aw_lanes l
         *esum += amax[j];
       }
     }
-    if (AW_HAS(AW_F_FINAL_STATES)) aw_store_final(out, l.first + (aw_u64)j - l.chunk_first, s, j, st);
+    const aw_u64 rec = AW_LANE_RECORD(l, j);
+    if (AW_HAS(AW_F_FINAL_STATES)) {
+      aw_store_state_reals(aw_record_r(out, ip, AW_OUT_FINAL_STATE, rec), s, j);
+      aw_store_state_ints(aw_record_i(out, ip, AW_OUT_FINAL_STATE, rec), s, j, st);
+    }
     if (AW_HAS(AW_F_TANGENT))
-      aw_store_indicators(cfg, out.indicators, l.first + (aw_u64)j - l.chunk_first, &fx->tangent, j,
+      aw_store_indicators(cfg, aw_record_r(out, ip, AW_OUT_INDICATORS, rec), &fx->tangent, j,
                           st == AW_STATUS_OK || st == AW_STATUS_LEFT_REGION, rp);
   }
 }

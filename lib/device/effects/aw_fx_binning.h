@@ -42,10 +42,10 @@ AW_FN void aw_bin_window(aw_config cfg, AW_CONSTANT aw_rparams* rp, AW_CONSTANT 
   const int moved = !(dx == AW_R(0.0) && dy == AW_R(0.0) && dz == AW_R(0.0));
   if (AW_HAS(AW_F_VELOCITY_MAP) && frame >= 0) {
     aw_i64 pix = moved ? aw_vec2pix_ring(nside, dx, dy, dz) : 0;
-    AW_ATOMIC_INC(&out.map[(aw_u64)(frame * npix + pix)]);
+    AW_ATOMIC_INC(&out.hist[(aw_u64)(frame * npix + pix)]);
   }
   if (AW_HAS(AW_F_ZOOM) && moved) {
-    AW_GLOBAL aw_u32* zoom = out.map + (aw_u64)(ip->frames * npix);
+    AW_GLOBAL aw_u32* zoom = out.hist + (aw_u64)(ip->frames * npix);
     aw_i64 bin = aw_zoom_bin(&rp->zoom, ip->zoom_resolution, dx, dy, dz);
     if (bin >= 0) AW_ATOMIC_INC(&zoom[bin]);
   }

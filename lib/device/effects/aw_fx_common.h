@@ -18,16 +18,24 @@
 #define AW_ATOMIC_INC(p) __atomic_fetch_add((p), 1u, __ATOMIC_RELAXED)
 #endif
 
-/* Where the results of one work-item go. Pointers the scene does not need may
- * be null; they are never touched then. */
+/* Where the results of one work-item go: the output arenas of the kernel's
+ * buffers (aw_params.h). */
 typedef struct {
-  AW_GLOBAL aw_u32* map;       /* F velocity maps of 12 nside^2 counts, then the zoom */
+  AW_GLOBAL aw_u32* hist;      /* F velocity maps of 12 nside^2 counts, then the zoom */
   AW_GLOBAL aw_u32* counters;  /* AW_C_COUNT counters */
-  AW_GLOBAL real* initial_r;   /* AW_STATE_REALS per trajectory of the chunk */
-  AW_GLOBAL real* final_r;     /* AW_STATE_REALS per trajectory of the chunk */
-  AW_GLOBAL aw_i64* final_i;   /* AW_STATE_INTS per trajectory of the chunk */
-  AW_GLOBAL real* indicators;  /* AW_IND_REALS per trajectory of the chunk (chaos indicators) */
+  AW_GLOBAL real* rec_r;       /* ip->rec_reals reals per trajectory of the chunk */
+  AW_GLOBAL aw_i64* rec_i;     /* ip->rec_ints integers per trajectory of the chunk */
 } aw_outputs;
+
+/* The columns of output `slot` in the records of trajectory `rec` (relative
+ * to the chunk's first): reals and integers. Only slots the plan lays out
+ * (the kernel's features ask for them) may be written. */
+AW_FN AW_GLOBAL real* aw_record_r(aw_outputs out, AW_CONSTANT aw_iparams* ip, int slot, aw_u64 rec) {
+  return out.rec_r + rec * (aw_u64)ip->rec_reals + (aw_u64)ip->rec_col_r[slot];
+}
+AW_FN AW_GLOBAL aw_i64* aw_record_i(aw_outputs out, AW_CONSTANT aw_iparams* ip, int slot, aw_u64 rec) {
+  return out.rec_i + rec * (aw_u64)ip->rec_ints + (aw_u64)ip->rec_col_i[slot];
+}
 
 /* The trajectories of one work-item: first .. first + AW_LANES - 1; those at
  * or beyond end are idle lanes. chunk_first: the chunk's first trajectory
@@ -38,6 +46,8 @@ typedef struct {
 
 /* A lane of the work-item that holds a trajectory. */
 #define AW_LANE_ACTIVE(l, j) ((l).first + (aw_u64)(j) < (l).end)
+/* The record of lane j: its trajectory's index relative to the chunk's first. */
+#define AW_LANE_RECORD(l, j) ((l).first + (aw_u64)(j) - (l).chunk_first)
 
 /* 1 in the lanes whose direction (x, y, z) lies in the gnomonic square region
  * r (aw_params.h), 0 elsewhere. */

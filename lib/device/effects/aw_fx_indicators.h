@@ -30,7 +30,8 @@ AW_FN real aw_nan_real(void) {
 /* log x for x > 0 finite, NaN otherwise. */
 AW_FN real aw_log_or_nan(real x) { return (x > AW_R(0.0) && x - x == AW_R(0.0)) ? aw_log(x) : aw_nan_real(); }
 
-AW_FN void aw_store_indicators(aw_config cfg, AW_GLOBAL real* out, aw_u64 rec, const aw_tangent* t, int j, int ok,
+/* Lane j's indicators into out[0 .. AW_IND_REALS - 1]. */
+AW_FN void aw_store_indicators(aw_config cfg, AW_GLOBAL real* out, const aw_tangent* t, int j, int ok,
                                AW_CONSTANT aw_rparams* rp) {
   real l2[AW_LANES], mx[AW_LANES], ys[AW_LANES], cv[AW_LANES];
   real qx[AW_LANES], qy[AW_LANES], qz[AW_LANES], px[AW_LANES], py[AW_LANES], pz[AW_LANES];
@@ -62,10 +63,10 @@ AW_FN void aw_store_indicators(aw_config cfg, AW_GLOBAL real* out, aw_u64 rec, c
       lam = AW_FMA(l2[j], ln2, AW_R(0.5) * aw_log_or_nan(n2)) / (k * h);
     }
   }
-  out[rec * AW_IND_REALS + AW_IND_FLI] = fli;
-  out[rec * AW_IND_REALS + AW_IND_MEGNO] = megno;
-  out[rec * AW_IND_REALS + AW_IND_MEGNO_LYAPUNOV] = lam_y;
-  out[rec * AW_IND_REALS + AW_IND_LYAPUNOV] = lam;
+  out[AW_IND_FLI] = fli;
+  out[AW_IND_MEGNO] = megno;
+  out[AW_IND_MEGNO_LYAPUNOV] = lam_y;
+  out[AW_IND_LYAPUNOV] = lam;
 }
 
 #endif /* AW_FX_INDICATORS_H */

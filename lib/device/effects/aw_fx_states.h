@@ -1,31 +1,31 @@
-/* arnoldweb effects "initial_states" and "final_states": state records of
- * every trajectory (aw_params.h: AW_STATE_REALS reals, AW_STATE_INTS
- * integers), by index relative to the chunk's first trajectory. */
+/* arnoldweb effects "initial_states" and "final_states": the state of every
+ * trajectory (aw_params.h: AW_STATE_REALS reals, AW_STATE_INTS integers) in
+ * its record (slots AW_OUT_INITIAL_STATE, AW_OUT_FINAL_STATE). */
 #ifndef AW_FX_STATES_H
 #define AW_FX_STATES_H
 
 #include "effects/aw_fx_common.h"
 
-AW_FN void aw_store_states(AW_GLOBAL real* out, aw_u64 rec, const aw_lstate* s, int j) {
+/* Lane j's position (turns) and momentum into r[0..5]. */
+AW_FN void aw_store_state_reals(AW_GLOBAL real* r, const aw_lstate* s, int j) {
   real a[AW_LANES];
-  AW_STORE_LANES(s->ux, a); out[rec * AW_STATE_REALS + 0] = a[j];
-  AW_STORE_LANES(s->uy, a); out[rec * AW_STATE_REALS + 1] = a[j];
-  AW_STORE_LANES(s->uz, a); out[rec * AW_STATE_REALS + 2] = a[j];
-  AW_STORE_LANES(s->px, a); out[rec * AW_STATE_REALS + 3] = a[j];
-  AW_STORE_LANES(s->py, a); out[rec * AW_STATE_REALS + 4] = a[j];
-  AW_STORE_LANES(s->pz, a); out[rec * AW_STATE_REALS + 5] = a[j];
+  AW_STORE_LANES(s->ux, a); r[0] = a[j];
+  AW_STORE_LANES(s->uy, a); r[1] = a[j];
+  AW_STORE_LANES(s->uz, a); r[2] = a[j];
+  AW_STORE_LANES(s->px, a); r[3] = a[j];
+  AW_STORE_LANES(s->py, a); r[4] = a[j];
+  AW_STORE_LANES(s->pz, a); r[5] = a[j];
 }
 
-/* The final record of lane j: its state, winding counts and status. */
-AW_FN void aw_store_final(aw_outputs out, aw_u64 rec, const aw_lstate* s, int j, int status) {
-  aw_store_states(out.final_r, rec, s, j);
+/* Lane j's winding counts and status into i[0..3]. */
+AW_FN void aw_store_state_ints(AW_GLOBAL aw_i64* i, const aw_lstate* s, int j, int status) {
   lint wv[3] = {s->wx, s->wy, s->wz};
   for (int c = 0; c < 3; ++c) {
     aw_i64 wa[AW_LANES];
     AW_STORE_ILANES(wv[c], wa);
-    out.final_i[rec * AW_STATE_INTS + c] = wa[j];
+    i[c] = wa[j];
   }
-  out.final_i[rec * AW_STATE_INTS + 3] = status;
+  i[3] = status;
 }
 
 #endif /* AW_FX_STATES_H */

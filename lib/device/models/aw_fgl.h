@@ -6,7 +6,7 @@
  *
  * The angles phi are the torus coordinates X (turns u = phi / 2 pi), the
  * actions the momenta P: the kinetic form T = sum a_i p_i^2/2 + b_i p_i with
- * a = (1, 1, 0), b = (0, 0, 1) (models/aw_kinetic.h). Parameter: eps =
+ * a = (1, 1, 0), b = (0, 0, 1) (kinetic/aw_kinetic.h). Parameter: eps =
  * rp->model[0]. With D = cos phi1 + cos phi2 + cos phi3 + 4 (1 <= D <= 7):
  *   F_i = -dV/dphi_i = -eps sin phi_i / D^2,
  *   V_ii = eps (cos phi_i / D^2 + 2 sin^2 phi_i / D^3),
@@ -18,7 +18,7 @@
 
 #include "aw_math.h"
 #include "aw_state.h"
-#include "models/aw_kinetic.h"
+#include "kinetic/aw_kinetic.h"
 
 AW_FN void aw_model_force(aw_lstate* s, AW_CONSTANT aw_rparams* rp) {
   lreal sx, cx, sy, cy, sz, cz;

@@ -16,7 +16,7 @@
 
 #include "aw_math.h"
 #include "aw_state.h"
-#include "models/aw_kinetic_ab.h" /* the kinetic half: a, b in rp->model[0..5] */
+#include "kinetic/aw_kinetic_ab.h" /* the kinetic half: a, b in rp->model[0..5] */
 
 #define AW_FOURIER_MAX 32 /* harmonics */
 #define AW_FOURIER_FIRST 7 /* index of the first harmonic in rp->model */

@@ -16,6 +16,7 @@
 
 #include "aw_math.h"
 #include "aw_state.h"
+#include "kinetic/aw_kinetic_standard.h" /* T = |P|^2 / 2 */
 
 /* sin and cos of x, y and 2z (from the angles in turns) */
 typedef struct {
@@ -66,26 +67,6 @@ AW_FN lreal aw_model_potential(lreal ux, lreal uy, lreal uz, AW_CONSTANT aw_rpar
   const aw_seibert_trig t = aw_seibert_trig_at(ux, uy, uz);
   lreal cxcy = t.cx * t.cy;
   return AW_FMA(cxcy, t.c2, cxcy);
-}
-
-AW_FN lreal aw_model_kinetic(lreal px, lreal py, lreal pz, AW_CONSTANT aw_rparams* rp) {
-  return AW_R(0.5) * AW_FMA(pz, pz, AW_FMA(py, py, px * px));
-}
-
-/* The diagonal of d^2T/dP^2 (constant for every supported kinetic form): the tangent drift is du_i += d a_i dp_i. */
-AW_FN void aw_model_kinetic_diag(AW_CONSTANT aw_rparams* rp, real* a) { a[0] = AW_R(1.0); a[1] = AW_R(1.0); a[2] = AW_R(1.0); }
-
-AW_FN void aw_model_drift(aw_lstate* s, real d, AW_CONSTANT aw_rparams* rp) {
-  lreal dd = AW_LSPLAT(d);
-  s->ux = AW_FMA(dd, s->px, s->ux);
-  s->uy = AW_FMA(dd, s->py, s->uy);
-  s->uz = AW_FMA(dd, s->pz, s->uz);
-}
-
-/* |P|^2 / 2 = ke along any direction: s = sqrt(2 ke); ok where ke > 0. */
-AW_FN lreal aw_model_speed(lreal ke, lreal dx, lreal dy, lreal dz, AW_CONSTANT aw_rparams* rp, lreal* ok) {
-  *ok = AW_SELECT(AW_LSPLAT(AW_R(0.0)), AW_LSPLAT(AW_R(1.0)), ke > AW_R(0.0));
-  return AW_SQRT(AW_R(2.0) * AW_SELECT(AW_LSPLAT(AW_R(0.0)), ke, ke > AW_R(0.0)));
 }
 
 #endif /* AW_SEIBERT2011_H */

@@ -13,14 +13,20 @@
 #include <string>
 #include <vector>
 
-#include "arnoldweb/job.hpp"
+#include "arnoldweb/run.hpp"
 
 namespace arnoldweb {
 
 // Runs a job over `devices` (threads of this process): results, checkpoints
-// and stop requests as run_job's.
+// and stop requests as run_job's; the results name every device
+// (describe_devices) and their kernels.
 JobResult run_job_on_devices(const Job& job, const std::vector<Backend*>& devices, const RunOptions& options = {},
                              JobObserver* observer = nullptr);
+
+// One device: run_job; several: run_job_on_devices (a process that drives
+// every device of a run.device list, docs/cluster.md).
+JobResult run_job_on(const Job& job, const std::vector<Backend*>& devices, const RunOptions& options = {},
+                     JobObserver* observer = nullptr);
 
 // Whether this library was built with MPI.
 bool cluster_built();

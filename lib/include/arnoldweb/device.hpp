@@ -32,15 +32,28 @@ struct DeviceInfo {
 std::vector<DeviceInfo> list_devices();
 std::vector<std::string> backend_problems();
 
+// What one launch computes: trajectories [first, first + count) over the
+// segments [seg_first, seg_end) of their schedule (seg_end < 0: to its end;
+// a segment is the steps between two energy samples). A plan with the carry
+// (open runs: time slices, states from a file) gives each launch the
+// trajectories' records as the previous launch left them (or as the states
+// were read), laid out as the kernel writes them.
+struct ChunkWork {
+  std::uint64_t first = 0, count = 0;
+  std::int64_t seg_first = 0, seg_end = -1;
+  const std::vector<double>* rec_r = nullptr;
+  const std::vector<std::int64_t>* rec_i = nullptr;
+};
+
 // What one chunk of trajectories produced (the histogram stays on the device
 // until read_histograms()).
 struct ChunkOutput {
   std::vector<std::uint32_t> counters;  // AW_C_COUNT
   std::vector<double> group_stats;      // (max, sum) pairs of max|dE|
-  std::vector<double> initial_r;        // AW_STATE_REALS per trajectory, when asked
-  std::vector<double> final_r;          // AW_STATE_REALS per trajectory, when asked
-  std::vector<std::int64_t> final_i;    // AW_STATE_INTS per trajectory, when asked
-  std::vector<double> indicators;       // AW_IND_REALS per trajectory, when an indicator is asked
+  // The chunk's records, trajectory after trajectory, as the plan lays them
+  // out (the output table: rec_reals reals and rec_ints integers each).
+  std::vector<double> rec_r;
+  std::vector<std::int64_t> rec_i;
 };
 
 class Backend {
@@ -51,8 +64,15 @@ class Backend {
   // buffers for chunks of up to max_chunk trajectories. Throws DeviceError,
   // BuildError.
   virtual void prepare(const Plan& plan, std::uint64_t max_chunk) = 0;
-  // Trajectories [first, first + count), count <= max_chunk. Blocks until done.
-  virtual void run_chunk(std::uint64_t first, std::uint64_t count, ChunkOutput& out) = 0;
+  // The work of one launch, count <= max_chunk. Blocks until done.
+  virtual void run_chunk(const ChunkWork& work, ChunkOutput& out) = 0;
+  // Trajectories [first, first + count) over their whole schedule.
+  void run_chunk(std::uint64_t first, std::uint64_t count, ChunkOutput& out) {
+    ChunkWork w;
+    w.first = first;
+    w.count = count;
+    run_chunk(w, out);
+  }
   // Every histogram accumulated over all chunks since prepare(), 64-bit counts
   // in the plan's layout: plan.frames maps of plan.npix pixels, then the
   // plan.zoom_resolution^2 zoom bins (plan.hist_size in all).
@@ -66,11 +86,28 @@ class Backend {
 // Open a device by id: "cpu", "opencl:N", "cuda:N", or "auto" (the first GPU,
 // else the first OpenCL device, else cpu). The environment variable
 // ARNOLDWEB_DEVICE, when set, replaces "auto". Throws DeviceError with the
-// list of devices and, where a platform is missing, how to install one.
+// list of devices and, where a platform is missing, how to install one; a
+// value that names several devices (a list, or "all" on a machine with
+// several GPUs) is a SceneError: open_backends opens them.
 std::unique_ptr<Backend> open_backend(const std::string& id);
 
 // The id "auto" resolves to on this machine.
 std::string default_device_id();
+
+// The devices a run.device value names, as ids of this machine, in order
+// (docs/cluster.md): "auto" as open_backend resolves it (ARNOLDWEB_DEVICE may
+// itself be a list or "all"); "all": every GPU, each once: the CUDA devices,
+// else the OpenCL devices that are not CPUs, and on a machine without a GPU
+// the default device alone; a list "cuda:0,cuda:1": its ids. Throws
+// SceneError (exit 2) for a malformed value or an id listed twice, DeviceError
+// (exit 4) for a device this machine lacks, with the list of those present.
+std::vector<std::string> device_ids(const std::string& device);
+// Opens every device of device_ids(device), in that order.
+std::vector<std::unique_ptr<Backend>> open_backends(const std::string& device);
+// What a result names when several devices computed it: the ids joined by
+// ",", the names ("2 x NVIDIA H200", or "AMD EPYC + pthread-..."), the compute
+// units and memory summed. One device: its own description.
+DeviceInfo describe_devices(const std::vector<DeviceInfo>& devices);
 
 // The description of the device `id` ("auto" as open_backend resolves it)
 // without opening it; throws DeviceError like open_backend when there is none.

@@ -3,6 +3,7 @@
 // and its status, the full build log and options).
 #pragma once
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -97,6 +98,25 @@ class CheckpointError : public Error {
   CheckpointError(const std::string& path, const std::string& message)
       : Error((path.empty() ? std::string() : path + ": ") + message) {}
   int exit_code() const noexcept override { return 2; }
+};
+
+// Initial states that cannot be used (states.hpp): a state file that cannot
+// be read or breaks the schema, or a state that is not finite, out of range
+// or far from the model's energy. `source` is the file (or "initial" for
+// arrays), `dataset` the HDF5 dataset or attribute ("" if none), `row` the
+// state counted from 0 (-1 if none). Bad input: exit code 2.
+class StateError : public Error {
+ public:
+  StateError(std::string source, std::string dataset, std::int64_t row, std::string message);
+  const std::string& source() const noexcept { return source_; }
+  const std::string& dataset() const noexcept { return dataset_; }
+  std::int64_t row() const noexcept { return row_; }
+  const std::string& message() const noexcept { return message_; }
+  int exit_code() const noexcept override { return 2; }
+
+ private:
+  std::string source_, dataset_, message_;
+  std::int64_t row_;
 };
 
 // The user interrupted a run (SIGINT); what was computed has been written.

@@ -2,19 +2,17 @@
 // runs of its [[panel]] tables (the same scene with overrides, e.g. the zooms
 // of the paper's Figures 2 and 3). The panels are planned up front, so a bad
 // panel fails before any work; the parts run one after the other on one
-// device; the outputs are written as one directory (write_job, output.hpp):
-// the main run's files, panel-<name>/ for every panel and figure.png.
+// device (run_job, run.hpp); the outputs are written as one directory
+// (write_job, output.hpp): the main run's files, panel-<name>/ for every
+// panel and figure.png.
 #pragma once
 
-#include <cstddef>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "arnoldweb/device.hpp"
 #include "arnoldweb/plan.hpp"
-#include "arnoldweb/result.hpp"
-#include "arnoldweb/run.hpp"
 
 namespace arnoldweb {
 
@@ -38,24 +36,9 @@ using StepResolver = std::function<Scene(const Scene&)>;
 // the panel's overrides, then the scene's own overrides). A part whose step is
 // "auto" is resolved with `resolve` first (without one it is refused). Throws
 // SceneError.
-Job plan_job(const Scene& scene, const StepResolver& resolve = {});
-
-struct JobResult {
-  std::vector<Result> results;  // one per part that ran, in order
-  bool interrupted = false;     // a stop request ended the job early
-};
-
-// Told when each part of a job starts; returns the progress receiver for it
-// (or null).
-class JobObserver {
- public:
-  virtual ~JobObserver() = default;
-  virtual Progress* begin_part(const Job& job, std::size_t index) = 0;
-};
-
-// Runs every part on `backend`; a stop request (options.stop) ends the part
-// that is running after its current chunk and skips the rest.
-JobResult run_job(const Job& job, Backend& backend, const RunOptions& options = {},
-                  JobObserver* observer = nullptr);
+// Parts that start from given states (ensemble.initial = "file") read them
+// from ensemble.file, or take `states` (Python's initial=) when the scene names
+// no file; a part with neither is refused.
+Job plan_job(const Scene& scene, const StepResolver& resolve = {}, std::shared_ptr<const StateSet> states = nullptr);
 
 }  // namespace arnoldweb

@@ -108,9 +108,25 @@ std::string summary_json(const Plan& plan, const Result& result, const std::vect
 // Individual writers (each atomic).
 void write_text_file(const std::string& path, const std::string& text);
 void write_map_hdf5(const std::string& path, const Plan& plan, const Result& result);
-void write_states_hdf5(const std::string& path, const Plan& plan, const Result& result);
-// indicators.h5: the chaos indicators and the grid (docs/indicators.md).
-void write_indicators_hdf5(const std::string& path, const Plan& plan, const Result& result);
+// One dataset of a per-trajectory output as its file holds it (the output
+// table's datasets; docs/outputs.md): e.g. output "final_states", dataset
+// "momentum" of shape {n, 3}; "indicators"/"fli" of the grid's shape.
+struct OutputDataset {
+  std::string output, name, meaning;
+  std::string file, group;             // where the writer puts it
+  std::vector<std::uint64_t> shape;
+  bool integers = false;               // values in `ints`, else in `reals`
+  std::vector<double> reals;
+  std::vector<std::int64_t> ints;
+};
+// Every dataset of the result's per-trajectory outputs, in the table's order.
+std::vector<OutputDataset> output_datasets(const Plan& plan, const Result& result);
+
+// The file `file` of the per-trajectory outputs (states.h5, indicators.h5, ...:
+// the output table's rows that name it; docs/outputs.md), at `path`.
+void write_records_hdf5(const std::string& path, const std::string& file, const Plan& plan, const Result& result);
+// The files the result's per-trajectory outputs go into, in the table's order.
+std::vector<std::string> record_files(const Result& result);
 
 struct RenderOptions {
   int width = 900;          // pixels
@@ -170,6 +186,12 @@ SavedMaps read_saved_maps(const std::string& dir);
 // (a plain file, a JSON object of the form arnoldweb writes): its text.
 // SavedRunError otherwise.
 std::string read_saved_summary(const std::string& dir);
+
+// The bytes of the file `name` of an output directory (e.g. "states.h5",
+// "panel-a/summary.json"), read as every reader of saved runs reads them: a
+// plain file with the size and digest its summary.json records (an older
+// directory without digests: read unchecked). SavedRunError otherwise.
+std::string read_saved_file(const std::string& dir, const std::string& name);
 
 // Draws the pictures of an output directory written earlier (from its
 // summary.json and map.h5; e.g. a GPU node's run, on a machine with cairo),

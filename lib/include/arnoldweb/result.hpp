@@ -21,6 +21,20 @@ struct EnergyStats {
   double quantile(double q) const;
 };
 
+// One per-trajectory output of a run, in trajectory order: `reals_per` reals
+// and `ints_per` integers for every completed trajectory. For example
+// "final_states": u_x, u_y, u_z (turns), p_x, p_y, p_z and winding x, y, z,
+// status; "indicators": FLI, MEGNO <Y>, the Lyapunov exponent from MEGNO's
+// slope and the finite-time Lyapunov exponent (1/T; NaN where not asked or
+// flagged). The columns are listed in docs/outputs.md.
+struct Records {
+  std::string name;
+  std::size_t reals_per = 0, ints_per = 0;
+  std::vector<double> reals;
+  std::vector<std::int64_t> ints;
+  std::uint64_t count() const { return reals_per ? reals.size() / reals_per : ints_per ? ints.size() / ints_per : 0; }
+};
+
 struct Result {
   DeviceInfo device;
   std::string kernel;  // compiler options / variant
@@ -41,16 +55,15 @@ struct Result {
   std::vector<std::vector<std::uint64_t>> frames;  // one map per frame (observe.frames)
   std::vector<std::uint64_t> zoom;  // R x R counts, row y then column x (observe.zoom)
 
-  // State records of completed trajectories, in index order (when asked for):
-  // AW_STATE_REALS reals (u_x, u_y, u_z in turns, p_x, p_y, p_z) and
-  // AW_STATE_INTS integers (winding x, y, z, status) per trajectory.
-  std::vector<double> initial_r, final_r;
-  std::vector<std::int64_t> final_i;
-  // Chaos indicators of completed trajectories, in index order (when asked
-  // for): AW_IND_REALS reals per trajectory (FLI, MEGNO <Y>, Lyapunov exponent
-  // from MEGNO's slope in 1/T, finite-time Lyapunov exponent in 1/T; NaN where
-  // not asked or flagged). docs/indicators.md.
-  std::vector<double> indicators;
+  // The per-trajectory outputs the plan asked for, one per row of the output
+  // table (docs/outputs.md: "initial_states", "final_states", "indicators",
+  // ...), in the table's order.
+  std::vector<Records> records;
+  // The records of an output, or nullptr when the run has none.
+  const Records* records_of(const std::string& name) const;
+  // Its reals and integers (empty when the run has none).
+  const std::vector<double>& reals(const std::string& name) const;
+  const std::vector<std::int64_t>& ints(const std::string& name) const;
 
   double wall_seconds = 0;
   double trajectory_steps = 0;  // completed * steps per trajectory
@@ -58,10 +71,9 @@ struct Result {
   std::vector<std::uint64_t> chunks;  // size of every launch, in order
 };
 
-// XXH3-128 digests, as 32 hex digits.
+// XXH3-128 digests, as 32 hex digits: of the map, and of an output's records
+// (its reals, then its integers; "" if the run has none).
 std::string digest_map(const Result& r);
-std::string digest_initial_states(const Result& r);  // "" if none
-std::string digest_final_states(const Result& r);    // "" if none
-std::string digest_indicators(const Result& r);      // "" if none
+std::string digest_records(const Result& r, const std::string& name);
 
 }  // namespace arnoldweb

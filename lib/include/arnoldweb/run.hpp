@@ -2,10 +2,12 @@
 #pragma once
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 
 #include "arnoldweb/device.hpp"
+#include "arnoldweb/job.hpp"
 #include "arnoldweb/plan.hpp"
 #include "arnoldweb/result.hpp"
 
@@ -60,5 +62,24 @@ struct RunOptions {
 // Run every trajectory of the plan. Chunks are a partition of the index range,
 // so the result does not depend on how it is split. Throws DeviceError.
 Result run(const Plan& plan, Backend& backend, const RunOptions& options = {});
+
+// ------------------------------------------------------------------ jobs
+struct JobResult {
+  std::vector<Result> results;  // one per part that ran, in order
+  bool interrupted = false;     // a stop request ended the job early
+};
+
+// Told when each part of a job starts; returns the progress receiver for it
+// (or null).
+class JobObserver {
+ public:
+  virtual ~JobObserver() = default;
+  virtual Progress* begin_part(const Job& job, std::size_t index) = 0;
+};
+
+// Runs every part on `backend`; a stop request (options.stop) ends the part
+// that is running after its current chunk and skips the rest.
+JobResult run_job(const Job& job, Backend& backend, const RunOptions& options = {},
+                  JobObserver* observer = nullptr);
 
 }  // namespace arnoldweb

@@ -11,13 +11,9 @@
 #include <utility>
 #include <vector>
 
+#include "arnoldweb/precision.hpp"
+
 namespace arnoldweb {
-
-enum class Precision { Double, Float };
-enum class MathMode { Portable, Native };
-
-const char* to_string(Precision p);
-const char* to_string(MathMode m);
 
 // Where a key was written (for messages about values that are only found to be
 // wrong later, e.g. by the planner). line 0: not in the file (a default, or
@@ -50,15 +46,12 @@ struct AutoStep {
 struct Scene {
   // [model]
   double energy = 15.0;  // E; effective perturbation 2/E
-  // model.kind and the built-in models' parameters (docs/models.md, lib/src/physics/models.cpp)
+  // model.kind and the values of its parameters' keys as written (the models'
+  // descriptors declare them: lib/src/physics/models/<name>.cpp; a key not
+  // written takes its default): "model.epsilon" -> {0.01}, "model.harmonics"
+  // -> the rows [kx, ky, kz, c, phi] one after the other, ...
   std::string model_kind = "seibert2011";
-  double model_epsilon = 0.01;  // fgl: eps
-  // fourier: harmonics [k_x, k_y, k_z, c, phi] (phi in radians); the default is the paper's potential
-  std::vector<std::array<double, 5>> model_harmonics = {{1, 1, 0, 0.5, 0},   {1, -1, 0, 0.5, 0},
-                                                        {1, 1, 2, 0.25, 0},  {1, 1, -2, 0.25, 0},
-                                                        {1, -1, 2, 0.25, 0}, {1, -1, -2, 0.25, 0}};
-  std::array<double, 3> model_kinetic_a = {1, 1, 1};  // fourier: T = sum a_i p_i^2/2 + b_i p_i
-  std::array<double, 3> model_kinetic_b = {0, 0, 0};
+  std::map<std::string, std::vector<double>> model_values;
   // model.kind = "expression" (docs/models.md, "Expression models"): V over x, y, z
   // and its named parameters (sorted by name, as TOML tables read)
   std::string model_potential;
@@ -77,6 +70,9 @@ struct Scene {
   std::array<double, 2> box_lat = {-5.0, 5.0};     // ensemble.box.lat, degrees
   std::array<double, 2> gaussian_mean = {0.0, 0.0};     // ensemble.gaussian.mean (p_x, p_y)
   std::array<double, 2> gaussian_sigma = {0.01, 0.01};  // ensemble.gaussian.sigma
+  // ensemble.file: the HDF5 file of the states for ensemble.initial = "file"
+  // (states.hpp; relative to the current directory); "" when none
+  std::string initial_file;
 
   // [integrator]
   std::string method = "yoshida6a";
@@ -90,6 +86,7 @@ struct Scene {
   // [run]
   double average = 50.0;   // averaging window dt, in T
   double duration = 50.0;  // propagation time t_p, in T
+  double slice = 0.0;      // run.slice: time slices of long trajectories, in T (0: none)
   std::string device = "auto";
   // run.checkpoint_every: wall-clock seconds between checkpoints; 0: "off";
   // -1: "auto" (on, every 10 min, for runs estimated above an hour)
@@ -177,6 +174,15 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
 Scene parse_scene(const std::string& text, const std::string& file,
                   const std::vector<std::string>& overrides = {},
                   const std::vector<std::string>& labels = {});
+
+// run.device (docs/cluster.md): "auto", "all", one device id or a list of ids
+// separated by commas ("cuda:0,cuda:1"). The entries of a value as written: a
+// list's ids in order, any other value on its own.
+std::vector<std::string> device_entries(const std::string& device);
+// Whether `id` is one device id: "cpu", "opencl:N" or "cuda:N".
+bool is_device_id(const std::string& id);
+// The first id that a list names twice, or "".
+std::string repeated_device(const std::string& device);
 
 // All keys a scene may contain, with their type and allowed values, for docs
 // and `arnoldweb check`.

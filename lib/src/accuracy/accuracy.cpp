@@ -13,13 +13,16 @@
 // the pilot ensemble; if it misses, the measurement joins the fit and the
 // search repeats.
 #include "arnoldweb/accuracy.hpp"
+#include "physics/model_descriptor.hpp"
 #include "plan/checks.hpp"
+#include "plan/plan_params.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/run.hpp"
@@ -176,8 +179,7 @@ class Pilot {
       : scene_(scene), backend_(backend), n_(n), duration_(duration), every_(every) {}
 
   PilotPoint measure(const std::string& method, double step) {
-    const Plan plan = make_plan(pilot_scene(scene_, method, step, n_, duration_, every_));
-    const Result r = run(plan, backend_);
+    const Result r = run(plan_at(method, step), backend_);
     PilotPoint p;
     p.step = step;
     const bool lost = r.flagged_nonfinite > 0 || r.binned == 0;
@@ -191,7 +193,7 @@ class Pilot {
   double rate(const std::string& method, double step, std::uint64_t n, std::uint64_t most) {
     double rate = 0;
     for (int i = 0; i < 8; ++i) {
-      const Result r = run(make_plan(pilot_scene(scene_, method, step, n, duration_, every_)), backend_);
+      const Result r = run(with_trajectories(plan_at(method, step), n), backend_);
       rate = r.rate();
       if (r.wall_seconds >= 0.25 || n >= most) break;
       n = std::min(most, n * 4);
@@ -200,10 +202,20 @@ class Pilot {
   }
 
  private:
+  // The pilot's plan of a method at a step: planned once per method, then
+  // only its step changes (with_step).
+  Plan plan_at(const std::string& method, double step) {
+    auto it = planned_.find(method);
+    if (it == planned_.end())
+      it = planned_.emplace(method, make_plan(pilot_scene(scene_, method, step, n_, duration_, every_))).first;
+    return with_step(it->second, step);
+  }
+
   const Scene& scene_;
   Backend& backend_;
   std::uint64_t n_;
   double duration_, every_;
+  std::map<std::string, Plan> planned_;
 };
 
 // The cheapest step of one method meeting `target` (pilot max|dE|), a
@@ -272,32 +284,31 @@ AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tole
   rep.tolerance = tolerance;
   rep.safety = o.safety;
   const double target = tolerance / o.safety;
+  // ---- the scene as written, validated (the guard does not stop a report)
+  const bool concrete = !scene.step_auto;
+  const double unit = step_unit(scene);
+  Scene written = scene;
+  written.allow_unsafe_step = true;
+  if (!concrete) {  // any step that divides the schedule, to check the rest
+    written.step_auto = false;
+    written.step = unit / std::ceil(unit / 0.01 - 1e-9);
+  }
+  const Plan wp = make_plan(written);
+  rep.scene_trajectory_steps = wp.trajectory_steps;
+  rep.scene_force_evaluations = wp.force_evaluations;
+
   // Round-off bounds the energy error from below: a target under a few dozen
-  // ulps of the energy scale cannot be met, whatever the pilot would try
-  // (which would take minutes to find out).
+  // ulps of the energy scale (|E| and the model's largest |V|) cannot be met,
+  // whatever the pilot would try (which would take minutes to find out).
+  const auto v = wp.model->v_range(detail::params(wp).reals);
   const double eps = scene.precision == Precision::Float ? 5.96e-8 : 1.11e-16;
-  const double floor = 32 * eps * (std::fabs(scene.energy) + 2);
+  const double floor = 32 * eps * (std::fabs(scene.energy) + std::max(std::fabs(v[0]), std::fabs(v[1])));
   if (target < floor)
     fail(scene, "integrator.tolerance",
          "max|dE| <= " + fmt(tolerance) + " (" + fmt(target) + " on the pilot with safety " + fmt(o.safety) +
              ") is below what " + to_string(scene.precision) + " precision can reach at E = " + fmt(scene.energy) +
              " (round-off: about " + fmt(floor) + "); choose a tolerance of at least " + fmt(floor * o.safety) +
              (scene.precision == Precision::Float ? " or integrator.precision = \"double\"" : ""));
-
-  // ---- the scene as written, validated (the guard does not stop a report)
-  const bool concrete = !scene.step_auto;
-  const double unit = step_unit(scene);
-  {
-    Scene w = scene;
-    w.allow_unsafe_step = true;
-    if (!concrete) {  // any step that divides the schedule, to check the rest
-      w.step_auto = false;
-      w.step = unit / std::ceil(unit / 0.01 - 1e-9);
-    }
-    const Plan wp = make_plan(w);
-    rep.scene_trajectory_steps = wp.trajectory_steps;
-    rep.scene_force_evaluations = wp.force_evaluations;
-  }
 
   // ---- pilot schedule: |dE| every <= 1 T, a divisor of the scene's unit
   // (and a multiple of the scene's step, so that it can be measured as written)

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "arnoldweb/device.hpp"
+#include "aw_params.h"
 
 namespace arnoldweb::detail {
 
@@ -36,17 +37,18 @@ struct LaunchShape {
   std::uint64_t items = 0;       // work-items in all (groups * group_size)
 };
 
-// The buffers of the ensemble kernel; those the plan does not need are null.
+// What one launch of the ensemble kernel covers: trajectories
+// [first, first + count) over the segments [seg_first, seg_end) of their schedule.
+struct LaunchRange {
+  std::uint64_t first = 0, count = 0;
+  std::int64_t seg_first = 0, seg_end = 0;
+};
+
+// The buffers of the ensemble kernel, in its argument order (AW_BUFFERS,
+// aw_params.h); those the plan does not need are null.
 struct EnsembleBuffers {
-  DeviceMemory* reals = nullptr;     // aw_rparams, in the kernel's precision
-  DeviceMemory* ints = nullptr;      // aw_iparams
-  DeviceMemory* counts = nullptr;    // 32-bit histogram counts of the chunk
-  DeviceMemory* counters = nullptr;  // AW_C_COUNT 32-bit counters
-  DeviceMemory* initial_r = nullptr;
-  DeviceMemory* final_r = nullptr;
-  DeviceMemory* final_i = nullptr;
-  DeviceMemory* indicators = nullptr;  // AW_IND_REALS per trajectory (chaos indicators)
-  DeviceMemory* group_stats = nullptr;
+  DeviceMemory* at[AW_BUF_COUNT] = {};
+  DeviceMemory*& operator[](int i) { return at[i]; }
 };
 
 class ComputeDevice {
@@ -69,10 +71,8 @@ class ComputeDevice {
   virtual void zero(DeviceMemory& m) = 0;
 
   virtual LaunchShape shape(std::uint64_t count) const = 0;
-  // The ensemble kernel over trajectories [first, first + count); may return
-  // before it is done.
-  virtual void launch_ensemble(std::uint64_t first, std::uint64_t count, const LaunchShape& shape,
-                               const EnsembleBuffers& buffers) = 0;
+  // The ensemble kernel over a range; may return before it is done.
+  virtual void launch_ensemble(const LaunchRange& range, const LaunchShape& shape, const EnsembleBuffers& buffers) = 0;
   // total[i] += part[i], part[i] = 0 for i < n (64-bit totals of 32-bit counts).
   virtual void launch_fold(DeviceMemory& total, DeviceMemory& part, std::uint64_t n) = 0;
   // Waits for what was launched; errors raised inside kernels surface here,

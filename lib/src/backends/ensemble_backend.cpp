@@ -1,7 +1,9 @@
 // arnoldweb: running an ensemble on any device, written once over the device
-// layer (compute_device.hpp): the buffers a plan needs, the launch of a chunk
-// and the fold of its counts, reading back counters, group statistics and
-// state records (converted from float when the kernel computes in float).
+// layer (compute_device.hpp): the kernel's buffers (AW_BUFFERS), the launch
+// of a chunk and the fold of its counts, reading back counters, group
+// statistics and the records (converted from float when the kernel computes
+// in float). Which outputs the records hold is the output table's business:
+// this file only sizes and copies the arenas.
 #include <algorithm>
 #include <cstring>
 
@@ -9,7 +11,7 @@
 #include "aw_params.h"
 #include "backends/backends.hpp"
 #include "backends/compute_device.hpp"
-#include "plan/kernel_params.hpp"
+#include "plan/plan_params.hpp"
 
 namespace arnoldweb::detail {
 namespace {
@@ -27,37 +29,42 @@ class EnsembleBackend final : public Backend {
     release();
     dev_->compile(plan.kernel);
     float_ = plan.kernel.precision == Precision::Float;
-    features_ = plan.kernel.features;
     hist_size_ = plan.hist_size;
+    segments_ = plan.windows * plan.segments_per_window;
+    rec_reals_ = static_cast<std::uint64_t>(params(plan).ints.rec_reals);
+    rec_ints_ = static_cast<std::uint64_t>(params(plan).ints.rec_ints);
     max_chunk_ = max_chunk;
     allocate(plan);
   }
 
-  void run_chunk(std::uint64_t first, std::uint64_t count, ChunkOutput& out) override {
-    if (!b_.counters) throw DeviceError(info().id, "", 0, "run_chunk before prepare");
+  void run_chunk(const ChunkWork& w, ChunkOutput& out) override {
+    const std::uint64_t first = w.first, count = w.count;
+    if (!b_[AW_BUF_COUNTERS]) throw DeviceError(info().id, "", 0, "run_chunk before prepare");
     if (count > max_chunk_)
       throw DeviceError(info().id, "", 0,
                         "chunk of " + std::to_string(count) + " trajectories exceeds the prepared " +
                             std::to_string(max_chunk_));
     const LaunchShape shape = dev_->shape(count);
-    dev_->zero(*b_.counters);
-    if (count > 0) dev_->launch_ensemble(first, count, shape, b_);
-    if (hist_size_) dev_->launch_fold(*map64_, *b_.counts, hist_size_);
+    dev_->zero(*b_[AW_BUF_COUNTERS]);
+    if (w.rec_r && rec_reals_) write_reals(*b_[AW_BUF_RECORDS_R], *w.rec_r, count * rec_reals_);
+    if (w.rec_i && rec_ints_) {
+      if (w.rec_i->size() < count * rec_ints_) throw DeviceError(info().id, "", 0, "records in shorter than the chunk");
+      dev_->upload(*b_[AW_BUF_RECORDS_I], w.rec_i->data(), count * rec_ints_ * 8);
+    }
+    const LaunchRange range{first, count, w.seg_first, w.seg_end < 0 ? segments_ : w.seg_end};
+    if (count > 0) dev_->launch_ensemble(range, shape, b_);
+    if (hist_size_) dev_->launch_fold(*map64_, *b_[AW_BUF_HIST], hist_size_);
     dev_->finish("trajectories [" + std::to_string(first) + ", " + std::to_string(first + count) + ")");
 
     out.counters.assign(AW_C_COUNT, 0);
-    dev_->download(*b_.counters, out.counters.data(), AW_C_COUNT * 4);
-    read_reals(*b_.group_stats, AW_GROUP_STATS * shape.groups, out.group_stats);
-    out.initial_r.clear();
-    out.final_r.clear();
-    out.final_i.clear();
-    out.indicators.clear();
-    if (features_ & AW_F_TANGENT) read_reals(*b_.indicators, count * AW_IND_REALS, out.indicators);
-    if (features_ & AW_F_INITIAL_STATES) read_reals(*b_.initial_r, count * AW_STATE_REALS, out.initial_r);
-    if (features_ & AW_F_FINAL_STATES) {
-      read_reals(*b_.final_r, count * AW_STATE_REALS, out.final_r);
-      out.final_i.assign(count * AW_STATE_INTS, 0);
-      dev_->download(*b_.final_i, out.final_i.data(), count * AW_STATE_INTS * 8);
+    dev_->download(*b_[AW_BUF_COUNTERS], out.counters.data(), AW_C_COUNT * 4);
+    read_reals(*b_[AW_BUF_GROUP_STATS], AW_GROUP_STATS * shape.groups, out.group_stats);
+    out.rec_r.clear();
+    out.rec_i.clear();
+    if (rec_reals_) read_reals(*b_[AW_BUF_RECORDS_R], count * rec_reals_, out.rec_r);
+    if (rec_ints_) {
+      out.rec_i.assign(count * rec_ints_, 0);
+      dev_->download(*b_[AW_BUF_RECORDS_I], out.rec_i.data(), count * rec_ints_ * 8);
     }
   }
 
@@ -90,13 +97,10 @@ class EnsembleBackend final : public Backend {
     const std::vector<unsigned char> reals = kp.real_bytes(plan.kernel.precision);
     const std::size_t groups = dev_->shape(max_chunk_).groups + 1;
     const std::size_t hist = std::max<std::uint64_t>(hist_size_, 1);
-    const std::size_t state_r = (features_ & AW_F_INITIAL_STATES) ? max_chunk_ * AW_STATE_REALS * rs : 0;
-    const std::size_t final_r = (features_ & AW_F_FINAL_STATES) ? max_chunk_ * AW_STATE_REALS * rs : 0;
-    const std::size_t final_i = (features_ & AW_F_FINAL_STATES) ? max_chunk_ * AW_STATE_INTS * 8 : 0;
-    const std::size_t indicators = (features_ & AW_F_TANGENT) ? max_chunk_ * AW_IND_REALS * rs : 0;
+    const std::size_t rec_r = max_chunk_ * rec_reals_ * rs;
+    const std::size_t rec_i = max_chunk_ * rec_ints_ * 8;
     const double need = static_cast<double>(reals.size() + sizeof(IntParams) + hist * 12 + AW_C_COUNT * 4 +
-                                            AW_GROUP_STATS * groups * rs + state_r + final_r + final_i +
-                                            indicators);
+                                            AW_GROUP_STATS * groups * rs + rec_r + rec_i);
     const std::uint64_t free = dev_->free_memory();
     if (free && need > static_cast<double>(free))
       throw DeviceError(info().id, "", 0,
@@ -104,21 +108,30 @@ class EnsembleBackend final : public Backend {
                             "), " + mib(static_cast<double>(free)) +
                             " are free; set ensemble.chunk smaller (state records) or "
                             "observe.velocity_map.nside smaller (map)");
-    b_.reals = make(reals.size(), "the real parameters");
-    dev_->upload(*b_.reals, reals.data(), reals.size());
-    b_.ints = make(sizeof(IntParams), "the integer parameters");
-    dev_->upload(*b_.ints, &kp.ints, sizeof(IntParams));
-    b_.counts = make(hist * 4, "the velocity map (32-bit chunk counts)");
+    b_[AW_BUF_RPARAMS] = make(reals.size(), "the real parameters");
+    dev_->upload(*b_[AW_BUF_RPARAMS], reals.data(), reals.size());
+    b_[AW_BUF_IPARAMS] = make(sizeof(IntParams), "the integer parameters");
+    dev_->upload(*b_[AW_BUF_IPARAMS], &kp.ints, sizeof(IntParams));
+    b_[AW_BUF_HIST] = make(hist * 4, "the velocity map (32-bit chunk counts)");
     map64_ = make(hist * 8, "the velocity map (64-bit totals)");
-    dev_->zero(*b_.counts);
+    dev_->zero(*b_[AW_BUF_HIST]);
     dev_->zero(*map64_);
-    b_.counters = make(AW_C_COUNT * 4, "the counters");
-    b_.group_stats = make(AW_GROUP_STATS * groups * rs, "the energy statistics");
-    if (state_r) b_.initial_r = make(state_r, "initial states (ensemble.chunk per launch)");
-    if (final_r) b_.final_r = make(final_r, "final states (ensemble.chunk per launch)");
-    if (final_i) b_.final_i = make(final_i, "final states (ensemble.chunk per launch)");
-    if (indicators) b_.indicators = make(indicators, "chaos indicators (ensemble.chunk per launch)");
+    b_[AW_BUF_COUNTERS] = make(AW_C_COUNT * 4, "the counters");
+    b_[AW_BUF_GROUP_STATS] = make(AW_GROUP_STATS * groups * rs, "the energy statistics");
+    if (rec_r) b_[AW_BUF_RECORDS_R] = make(rec_r, "per-trajectory records (ensemble.chunk per launch)");
+    if (rec_i) b_[AW_BUF_RECORDS_I] = make(rec_i, "per-trajectory records (ensemble.chunk per launch)");
     dev_->finish("preparing buffers");
+  }
+
+  // n reals of `in` into m, in the kernel's precision.
+  void write_reals(DeviceMemory& m, const std::vector<double>& in, std::size_t n) {
+    if (in.size() < n) throw DeviceError(info().id, "", 0, "records in shorter than the chunk");
+    if (!float_) {
+      dev_->upload(m, in.data(), n * sizeof(double));
+      return;
+    }
+    const std::vector<float> f(in.begin(), in.begin() + static_cast<std::ptrdiff_t>(n));
+    dev_->upload(m, f.data(), n * sizeof(float));
   }
 
   void read_reals(const DeviceMemory& m, std::size_t n, std::vector<double>& out) {
@@ -137,8 +150,8 @@ class EnsembleBackend final : public Backend {
   EnsembleBuffers b_;
   DeviceMemory* map64_ = nullptr;
   bool float_ = false;
-  std::uint32_t features_ = 0;
-  std::uint64_t hist_size_ = 0, max_chunk_ = 0;
+  std::uint64_t hist_size_ = 0, max_chunk_ = 0, rec_reals_ = 0, rec_ints_ = 0;
+  std::int64_t segments_ = 0;  // of a trajectory's schedule
 };
 
 }  // namespace

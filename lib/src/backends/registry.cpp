@@ -97,7 +97,15 @@ std::uint64_t available_memory() {
 }
 
 std::unique_ptr<Backend> open_backend(const std::string& requested) {
-  const std::string id = resolve_id(requested);
+  std::string id = resolve_id(requested);
+  if (id == "all" || id.find(',') != std::string::npos) {  // several devices, or "all" of one
+    const auto ids = device_ids(id);
+    if (ids.size() > 1)
+      throw SceneError("", 0, 0, "run.device",
+                       "\"" + id + "\" names " + std::to_string(ids.size()) +
+                           " devices, and this runs on one: give one id (`arnoldweb run` runs a scene on a list)");
+    id = ids.front();
+  }
   if (id == "cpu") return detail::make_cpu_backend();
   auto colon = id.find(':');
   const std::string kind = id.substr(0, colon);

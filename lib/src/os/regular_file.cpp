@@ -55,12 +55,12 @@ RegularFile failed(int err, std::string why) {
   return f;
 }
 
-}  // namespace
-
-RegularFile read_regular_file(const std::string& path, std::uint64_t max_bytes) {
+// Opens `path` without blocking and checks that it is a plain file: its
+// descriptor and size, or why not.
+RegularFile open_plain(const std::string& path, Fd& f) {
   if (path.empty()) return failed(ENOENT, "no file name given");
   if (path.find('\0') != std::string::npos) return failed(EINVAL, "the name holds a NUL character");
-  const Fd f{::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY)};
+  f.fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
   if (f.fd < 0) return failed(errno, std::strerror(errno));
   struct stat st {};
   if (::fstat(f.fd, &st) != 0) return failed(errno, std::strerror(errno));
@@ -68,6 +68,20 @@ RegularFile read_regular_file(const std::string& path, std::uint64_t max_bytes) 
   if (pseudo_file_system(f.fd)) return failed(0, "it is a file of the kernel (/proc, /sys), not a file with contents");
   RegularFile out;
   out.size = static_cast<std::uint64_t>(st.st_size);
+  return out;
+}
+
+}  // namespace
+
+std::string plain_file_problem(const std::string& path) {
+  Fd f{-1};
+  return open_plain(path, f).why;
+}
+
+RegularFile read_regular_file(const std::string& path, std::uint64_t max_bytes) {
+  Fd f{-1};
+  RegularFile out = open_plain(path, f);
+  if (!out.why.empty()) return out;
   if (out.size > max_bytes) {
     out.why = "it is " + std::to_string(out.size) + " bytes; at most " + std::to_string(max_bytes) + " bytes are read";
     return out;

@@ -22,4 +22,8 @@ struct RegularFile {
 // Reads `path` if it is a regular file of at most max_bytes.
 RegularFile read_regular_file(const std::string& path, std::uint64_t max_bytes);
 
+// Why `path` is not a plain file that another reader (HDF5) may open, or ""
+// when it is one: the same checks, without reading it.
+std::string plain_file_problem(const std::string& path);
+
 }  // namespace arnoldweb::detail

@@ -7,13 +7,14 @@
 
 #include "arnoldweb/analysis.hpp"
 #include "arnoldweb/errors.hpp"
-#include "arnoldweb/job.hpp"
+#include "arnoldweb/run.hpp"
 #include "arnoldweb/output.hpp"
 #include "aw_params.h"
 #include "output/file_digest.hpp"
 #include "output/indicator_pictures.hpp"
 #include "output/output_dir.hpp"
 #include "output/pictures.hpp"
+#include "plan/plan_params.hpp"
 
 namespace arnoldweb {
 namespace fs = std::filesystem;
@@ -38,10 +39,8 @@ void write_run_files(const Plan& plan, const Result& result, const fs::path& dir
   };
   if (!result.map.empty() || !result.zoom.empty())
     file("map.h5", [&](const std::string& p) { write_map_hdf5(p, plan, result); });
-  if (!result.initial_r.empty() || !result.final_r.empty())
-    file("states.h5", [&](const std::string& p) { write_states_hdf5(p, plan, result); });
-  if (!result.indicators.empty())
-    file("indicators.h5", [&](const std::string& p) { write_indicators_hdf5(p, plan, result); });
+  for (const std::string& name : record_files(result))
+    file(name, [&](const std::string& p) { write_records_hdf5(p, name, plan, result); });
   double lon, lat;
   if (!result.frames.empty() && detail::initial_centre(plan.scene, &lon, &lat))
     file("frames_spread.csv",
@@ -62,9 +61,9 @@ double part_bytes(const Plan& p) {
   const double n = static_cast<double>(p.scene.trajectories);
   double b = 64e3;                                                  // summary.json
   b += 8.0 * static_cast<double>(p.hist_size + (p.frames > 1 ? p.npix : 0)) + 16e3;  // map.h5
-  if (p.scene.initial_states) b += n * AW_STATE_REALS * 8;
-  if (p.scene.final_states) b += n * (AW_STATE_REALS * 8 + 3 * 8 + AW_STATE_INTS * 8);
-  if (p.scene.fli || p.scene.megno || p.scene.lyapunov) b += n * AW_IND_REALS * 8 + 16e3 + (p.scene.images ? 3e6 : 0);
+  const detail::IntParams& ip = detail::params(p).ints;
+  b += n * static_cast<double>(ip.rec_reals + ip.rec_ints) * 8 * 1.5 + 16e3;  // the records' files (and derived datasets)
+  if (p.scene.fli || p.scene.megno || p.scene.lyapunov) b += p.scene.images ? 3e6 : 0;
   if (p.scene.images) b += (p.scene.velocity_map ? 3 : 0) * 1.5e6 + (p.scene.zoom ? 1.5e6 : 0) + p.frames * 1.6e6;
   return b;
 }

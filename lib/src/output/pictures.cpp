@@ -8,8 +8,8 @@
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/version.hpp"
 #include "os/process.hpp"
-#include "physics/models.hpp"
-#include "plan/kernel_params.hpp"
+#include "physics/model_descriptor.hpp"
+#include "plan/plan_params.hpp"
 #include "output/atomic_file.hpp"
 
 namespace arnoldweb::detail {
@@ -57,9 +57,9 @@ RenderOptions picture_options(const Plan& plan, const Result& r) {
   RenderOptions o;
   o.title = title_of(plan, r);
   o.caption = caption_of(r);
-  // the circles of the model's own harmonics (the paper's: every resonance up to an order)
-  if (plan.scene.model_kind != "seibert2011" && plan.params)
-    o.resonances = detail::model_of(plan.scene).wave_vectors(detail::params(plan).reals);
+  // the circles of the model's own harmonics, or every resonance up to an order (the paper's)
+  if (plan.model && !plan.model->overlay_all_resonances && plan.params)
+    o.resonances = plan.model->wave_vectors(detail::params(plan).reals);
   double lon, lat;
   if (initial_centre(plan.scene, &lon, &lat)) {
     o.view_lon = lon;

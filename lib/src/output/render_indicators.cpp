@@ -66,9 +66,10 @@ void linear_bar(Canvas& c, double x, double y, double w, double h, const LinearS
 }
 
 std::vector<double> column(const Result& r, int slot) {
-  const std::size_t n = r.indicators.size() / AW_IND_REALS;
+  const std::vector<double>& ind = r.reals("indicators");
+  const std::size_t n = ind.size() / AW_IND_REALS;
   std::vector<double> v(n);
-  for (std::size_t t = 0; t < n; ++t) v[t] = r.indicators[t * AW_IND_REALS + slot];
+  for (std::size_t t = 0; t < n; ++t) v[t] = ind[t * AW_IND_REALS + slot];
   return v;
 }
 
@@ -166,7 +167,7 @@ const char* momentum_name(double axis) { return axis == 0 ? "p1 (p_x)" : axis ==
 void write_indicator_pictures(const Plan& plan, const Result& r, const std::string& dir,
                               std::vector<std::string>& names) {
   const Scene& s = plan.scene;
-  if (s.initial != "grid" || r.indicators.empty()) return;
+  if (s.initial != "grid" || r.reals("indicators").empty()) return;
   struct Picture {
     bool asked;
     const char* file;

@@ -14,6 +14,7 @@
 #include "aw_params.h"
 #include "os/regular_file.hpp"
 #include "output/file_digest.hpp"
+#include "output/hdf5_handle.hpp"
 
 namespace arnoldweb {
 namespace {
@@ -55,19 +56,10 @@ bool hex_digest(const json& v) {
   return s.size() == 32 && s.find_first_not_of("0123456789abcdef") == std::string::npos;
 }
 
-// An HDF5 handle, closed with its own close function on every path out.
-struct Handle {
-  hid_t id;
-  herr_t (*close)(hid_t);
-  ~Handle() {
-    if (id >= 0) close(id);
-  }
-};
-
 // map.h5's bytes opened as an HDF5 file in memory (the core driver): the
 // bytes that were checked are the bytes that are read.
 hid_t open_image(std::string& bytes, const std::string& path) {
-  const Handle fapl{H5Pcreate(H5P_FILE_ACCESS), H5Pclose};
+  const H5Handle fapl{H5Pcreate(H5P_FILE_ACCESS), H5Pclose};
   if (fapl.id < 0 || H5Pset_fapl_core(fapl.id, 1 << 20, 0) < 0 ||
       H5Pset_file_image(fapl.id, bytes.data(), bytes.size()) < 0)
     throw SavedRunError(path, "HDF5 could not take the file's bytes");
@@ -83,9 +75,9 @@ hid_t open_image(std::string& bytes, const std::string& path) {
 // that name.
 std::vector<hsize_t> dims_of(hid_t file, const char* name, const std::string& path) {
   if (H5Lexists(file, name, H5P_DEFAULT) <= 0) return {};
-  const Handle d{H5Dopen2(file, name, H5P_DEFAULT), H5Dclose};
+  const H5Handle d{H5Dopen2(file, name, H5P_DEFAULT), H5Dclose};
   if (d.id < 0) throw SavedRunError(path, std::string("cannot open the dataset ") + name);
-  const Handle space{H5Dget_space(d.id), H5Sclose};
+  const H5Handle space{H5Dget_space(d.id), H5Sclose};
   const int rank = space.id < 0 ? -1 : H5Sget_simple_extent_ndims(space.id);
   if (rank < 1 || rank > 2) throw SavedRunError(path, std::string("the dataset ") + name + " is not a list or a table");
   std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
@@ -111,18 +103,18 @@ std::vector<std::uint64_t> read_counts(hid_t file, const char* name, const std::
   for (hsize_t d : dims) n *= static_cast<std::size_t>(d);
   std::vector<std::uint64_t> v(dims.empty() ? 0 : n);
   if (v.empty()) return v;
-  const Handle d{H5Dopen2(file, name, H5P_DEFAULT), H5Dclose};
+  const H5Handle d{H5Dopen2(file, name, H5P_DEFAULT), H5Dclose};
   if (d.id < 0 || H5Dread(d.id, H5T_NATIVE_UINT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
     throw SavedRunError(path, std::string("cannot read the dataset ") + name + " as unsigned 64-bit counts");
   return v;
 }
 
 std::int64_t nside_attribute(hid_t file, const std::string& path) {
-  const Handle d{H5Dopen2(file, "map", H5P_DEFAULT), H5Dclose};
+  const H5Handle d{H5Dopen2(file, "map", H5P_DEFAULT), H5Dclose};
   std::int64_t nside = -1;
   if (d.id < 0 || H5Aexists(d.id, "nside") <= 0) throw SavedRunError(path, "the dataset map has no nside");
-  const Handle a{H5Aopen(d.id, "nside", H5P_DEFAULT), H5Aclose};
-  const Handle space{a.id < 0 ? -1 : H5Aget_space(a.id), H5Sclose};
+  const H5Handle a{H5Aopen(d.id, "nside", H5P_DEFAULT), H5Aclose};
+  const H5Handle space{a.id < 0 ? -1 : H5Aget_space(a.id), H5Sclose};
   if (a.id < 0 || space.id < 0 || H5Sget_simple_extent_npoints(space.id) != 1 ||
       H5Aread(a.id, H5T_NATIVE_INT64, &nside) < 0)
     throw SavedRunError(path, "cannot read the attribute nside of the dataset map");
@@ -263,7 +255,7 @@ int read_saved_map_h5(const SavedDir& saved, Result& r) {
   std::string bytes = saved.read("map.h5", "the run made neither a velocity map nor a zoom "
                                            "(observe.velocity_map, observe.zoom)");
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const Handle f{open_image(bytes, path), H5Fclose};
+  const H5Handle f{open_image(bytes, path), H5Fclose};
   const hsize_t npix = 12 * nside * nside;
   const std::string declared_nside = "maps.nside = " + std::to_string(nside);
   // no velocity map: the dataset map is empty (a run with a zoom) or absent
@@ -342,5 +334,9 @@ SavedMaps read_saved_maps(const std::string& dir) {
 }
 
 std::string read_saved_summary(const std::string& dir) { return detail::SavedDir(dir).summary_text(); }
+
+std::string read_saved_file(const std::string& dir, const std::string& name) {
+  return detail::SavedDir(dir).read(name);
+}
 
 }  // namespace arnoldweb

@@ -8,6 +8,7 @@
 #include "arnoldweb/output.hpp"
 #include "arnoldweb/version.hpp"
 #include "output/file_digest.hpp"
+#include "plan/output_table.hpp"
 
 namespace arnoldweb {
 namespace {
@@ -50,10 +51,8 @@ std::string summary_json(const Plan& plan, const Result& r, const std::vector<st
     j["energy_error"]["note"] = "max and mean over binned trajectories of max_t |E(t) - E(0)|; quantiles are "
                                 "upper edges of quarter-octave histogram bins over all trajectories";
   }
-  j["digests"] = {{"algorithm", "XXH3-128"},
-                  {"map", digest_map(r)},
-                  {"initial_states", digest_initial_states(r)},
-                  {"final_states", digest_final_states(r)}};
+  j["digests"] = {{"algorithm", "XXH3-128"}, {"map", digest_map(r)}};
+  for (const std::string& name : output_names()) j["digests"][name] = digest_records(r, name);
   j["device"] = {{"id", r.device.id},
                  {"backend", r.device.backend},
                  {"name", r.device.name},
@@ -92,6 +91,7 @@ std::string summary_json(const Plan& plan, const Result& r, const std::vector<st
                {"ordering", "RING"},
                {"frames", plan.frames},
                {"zoom_resolution", plan.zoom_resolution}};
+  j["time"] = {{"start", plan.start_time()}, {"end", plan.start_time() + plan.scene.duration}, {"unit", "T"}};
   j["scene"] = json::parse(plan.scene.to_json());  // every key, from the key table
   j["scene_toml"] = plan.scene.to_toml();
   if (plan.scene.auto_step.used) {  // integrator.step = "auto": the choice and its pilot (accuracy.hpp)

@@ -1,4 +1,4 @@
-// arnoldweb: the step-size guard (plan.hpp). Splitting methods resonate when
+// arnoldweb: the step-size guard (step_guard.hpp). Splitting methods resonate when
 // h omega reaches pi, omega the largest frequency of the model along a
 // trajectory (the paper's model: k |p|max, k = 2 the largest wave number of
 // the force, for z; other models: plan.cpp's model_frequency); the guard
@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "arnoldweb/plan.hpp"
-#include "plan/checks.hpp"
+#include "arnoldweb/step_guard.hpp"
+#include "physics/durations.hpp"
 
 namespace arnoldweb {
 

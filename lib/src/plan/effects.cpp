@@ -26,6 +26,8 @@ const std::vector<EffectRow>& effects() {
       {"fli", AW_F_FLI, [](const Scene& s) { return s.fli; }},
       {"megno", AW_F_MEGNO, [](const Scene& s) { return s.megno; }},
       {"lyapunov", AW_F_LYAPUNOV, [](const Scene& s) { return s.lyapunov; }},
+      // states from a file (ensemble.initial = "file"); time slices add it when planned (plan.cpp)
+      {"carry", AW_F_CARRY, [](const Scene& s) { return s.initial == "file"; }},
   };
   return rows;
 }

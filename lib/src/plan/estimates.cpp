@@ -8,6 +8,7 @@
 #include "arnoldweb/plan.hpp"
 #include "aw_params.h"
 #include "plan/checks.hpp"
+#include "plan/plan_params.hpp"
 
 namespace arnoldweb {
 namespace {
@@ -21,18 +22,16 @@ std::string mib(double bytes) {
   return b;
 }
 
-// State records, or the per-trajectory records of the chaos indicators.
+// Per-trajectory records (the output table's outputs), whatever they are.
 bool has_states(const Plan& p) {
-  return p.scene.initial_states || p.scene.final_states || (p.kernel.features & AW_F_TANGENT);
+  const detail::IntParams& ip = detail::params(p).ints;
+  return ip.rec_reals + ip.rec_ints > 0;
 }
 
-// Bytes of the state records of one trajectory on the device, and on the host.
+// Bytes of the records of one trajectory on the device, and on the host.
 double state_bytes(const Plan& p, double real_size) {
-  double b = 0;
-  if (p.scene.initial_states) b += AW_STATE_REALS * real_size;
-  if (p.scene.final_states) b += AW_STATE_REALS * real_size + AW_STATE_INTS * 8;
-  if (p.kernel.features & AW_F_TANGENT) b += AW_IND_REALS * real_size;
-  return b;
+  const detail::IntParams& ip = detail::params(p).ints;
+  return static_cast<double>(ip.rec_reals) * real_size + static_cast<double>(ip.rec_ints) * 8;
 }
 
 // The key that makes the histograms large.

@@ -41,7 +41,7 @@ Scene with_grid_size(const Scene& scene) {
   return s;
 }
 
-void plan_grid(const Scene& scene, const ModelRow& model, const RealParams& rp, Plan& p) {
+void plan_grid(const Scene& scene, const ModelDescriptor& model, const RealParams& rp, Plan& p) {
   p.accessible_fraction = 1;
   if (scene.grid_kind == "plane") return;
   const auto u = position_turns(scene);

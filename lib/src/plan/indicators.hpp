@@ -6,8 +6,8 @@
 #include <cstdint>
 
 #include "arnoldweb/plan.hpp"
-#include "physics/models.hpp"
-#include "plan/kernel_params.hpp"
+#include "physics/model_table.hpp"
+#include "params/kernel_params.hpp"
 
 namespace arnoldweb::detail {
 
@@ -21,7 +21,7 @@ Scene with_grid_size(const Scene& scene);
 
 // Checks a grid scene's values together (E > V at the position for direction
 // grids) and sets the plan's accessible fraction (1: no draws).
-void plan_grid(const Scene& scene, const ModelRow& model, const RealParams& rp, Plan& p);
+void plan_grid(const Scene& scene, const ModelDescriptor& model, const RealParams& rp, Plan& p);
 
 // The indicators' and the grid's parameters.
 void fill_indicator_reals(const Scene& scene, const Plan& p, RealParams& rp);

@@ -1,6 +1,8 @@
 // arnoldweb: planning a job: the scene and its panels (job.hpp).
 #include "arnoldweb/job.hpp"
 
+#include "plan/checks.hpp"
+
 namespace arnoldweb {
 
 namespace {
@@ -9,12 +11,25 @@ Plan plan_resolved(const Scene& scene, const StepResolver& resolve) {
   return make_plan(scene.step_auto && resolve ? resolve(scene) : scene);
 }
 
+// The states a part starts from when it names no file.
+void give_states(JobPart& part, const std::shared_ptr<const StateSet>& states) {
+  Plan& p = part.plan;
+  if (p.scene.initial != "file" || p.states) return;
+  if (!states)
+    detail::fail_at(p.scene, "ensemble.initial",
+                    "\"file\" needs ensemble.file = \"path.h5\", the HDF5 file of the states (docs/outputs.md, "
+                    "\"State files\"), or the states from Python (run(scene, initial=(X, P)))");
+  if (states->count != p.scene.trajectories) p = with_trajectories(p, states->count);
+  p.states = states;
+}
+
 }  // namespace
 
-Job plan_job(const Scene& scene, const StepResolver& resolve) {
+Job plan_job(const Scene& scene, const StepResolver& resolve, std::shared_ptr<const StateSet> states) {
   Job job;
   JobPart main;
   main.plan = plan_resolved(scene, resolve);
+  give_states(main, states);
   job.parts.push_back(std::move(main));
   for (const Scene::Panel& panel : scene.panels) {
     // the panel's overrides, then the user's (so --set applies to every panel)
@@ -35,6 +50,7 @@ Job plan_job(const Scene& scene, const StepResolver& resolve) {
     part.title = panel.title;
     part.subdir = "panel-" + panel.name;
     part.plan = plan_resolved(s, resolve);
+    give_states(part, states);
     job.parts.push_back(std::move(part));
   }
   return job;

@@ -35,6 +35,24 @@ void check_counts(const Scene& scene) {
               " T");
 }
 
+// run.slice: whole segments (the energy sample interval, or the window) per slice.
+void plan_slices(const Scene& scene, Plan& p) {
+  const std::int64_t segments = p.windows * p.segments_per_window;
+  p.slices = 1;
+  p.slice_segments = segments;
+  if (scene.slice == 0 || scene.slice >= scene.duration) return;
+  const double segment = scene.average / static_cast<double>(p.segments_per_window);
+  const std::int64_t per_slice = exact_ratio(scene.slice, segment);
+  if (per_slice == 0)
+    fail_at(scene, "run.slice",
+            "run.slice = " + fmt(scene.slice) + " T is not a multiple of " + fmt(segment) + " T (" +
+                (scene.energy_error || scene.max_energy_error.has_value() ? "observe.energy_error.every"
+                                                                          : "run.average, the energy not tracked") +
+                "): a slice ends where the energy is sampled");
+  p.slice_segments = per_slice;
+  p.slices = (segments + per_slice - 1) / per_slice;
+}
+
 }  // namespace
 
 void plan_schedule(const Scene& scene, Plan& p) {
@@ -63,6 +81,7 @@ void plan_schedule(const Scene& scene, Plan& p) {
     p.steps_per_segment = per_window;
   }
   p.steps_per_trajectory = p.windows * per_window;
+  plan_slices(scene, p);
   p.trajectory_steps = static_cast<double>(scene.trajectories) * static_cast<double>(p.steps_per_trajectory);
   p.force_evaluations = p.trajectory_steps * p.method.stages;
 }

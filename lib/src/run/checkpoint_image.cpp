@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "arnoldweb/errors.hpp"
-#include "arnoldweb/job.hpp"
+#include "arnoldweb/run.hpp"
 #include "arnoldweb/version.hpp"
 #include "run/byte_stream.hpp"
 

@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <chrono>
 
+#include "aw_params.h"
+#include "plan/plan_params.hpp"
+
 namespace arnoldweb::detail {
 namespace {
 
@@ -46,13 +49,13 @@ void drive_device(const Plan& plan, Backend& backend, WorkQueue& queue, const Ru
   const std::uint64_t min_chunk =
       std::min(max_chunk, align_up(std::max<std::uint64_t>(1, backend.preferred_chunk() / 4), granule));
   std::uint64_t want = plan.scene.chunk ? std::min(plan.scene.chunk, max_chunk) : min_chunk;
-  IndexRange done{};
+  ChunkWork done{};
   ChunkOutput out;
   for (;;) {
-    const IndexRange r = queue.next(done, out, want, backend);
+    const ChunkWork r = queue.next(done, out, want, backend);
     if (r.count == 0) break;
     const double t0 = now_seconds();
-    backend.run_chunk(r.first, r.count, out);
+    backend.run_chunk(r, out);
     const double dt = now_seconds() - t0;
     done = r;
     if (!plan.scene.chunk && dt > 0) {
@@ -75,12 +78,11 @@ LocalQueue::LocalQueue(const Plan& plan, Reduction& reduction, const RunOptions&
 
 double LocalQueue::seconds() const { return now_seconds() - start_; }
 
-IndexRange LocalQueue::next(const IndexRange& finished, const ChunkOutput& out, std::uint64_t want,
-                            Backend& backend) {
+ChunkWork LocalQueue::next(const ChunkWork& finished, const ChunkOutput& out, std::uint64_t want, Backend& backend) {
   const std::uint64_t n = plan_.scene.trajectories;
   if (finished.count) {
-    reduction_.add(finished.first, finished.count, out);
-    if (options_.progress) options_.progress->update(reduction_.completed(), n, seconds());
+    reduction_.add(finished, out);
+    if (options_.progress) options_.progress->update(reduction_.progress(), n, seconds());
   }
   const bool stopping = options_.stop && options_.stop->load() && !reduction_.complete();
   if (after_) after_(backend, stopping);
@@ -88,7 +90,41 @@ IndexRange LocalQueue::next(const IndexRange& finished, const ChunkOutput& out, 
     stopped_ = true;
     return {};
   }
-  return take_range(pending_, want, granule_);
+  if (plan_.slices > 1) return reduction_.next_slice(rec_r_, rec_i_);
+  return whole_work(plan_, take_range(pending_, want, granule_), rec_r_, rec_i_);
+}
+
+void initial_records(const Plan& plan, std::uint64_t first, std::uint64_t count, std::vector<double>& rec_r,
+                     std::vector<std::int64_t>& rec_i) {
+  const IntParams& ip = params(plan).ints;
+  const std::size_t nr = static_cast<std::size_t>(ip.rec_reals), ni = static_cast<std::size_t>(ip.rec_ints);
+  rec_r.assign(count * nr, 0.0);
+  rec_i.assign(count * ni, 0);
+  const StateSet& s = *plan.states;
+  const std::size_t cr = static_cast<std::size_t>(ip.rec_col_r[AW_OUT_CARRY]);
+  const std::size_t ci = static_cast<std::size_t>(ip.rec_col_i[AW_OUT_CARRY]);
+  for (std::uint64_t t = 0; t < count; ++t) {
+    const std::size_t i = static_cast<std::size_t>(first + t);
+    for (std::size_t c = 0; c < 3; ++c) {
+      rec_r[t * nr + cr + c] = s.position_turns[3 * i + c];
+      rec_r[t * nr + cr + 3 + c] = s.momentum[3 * i + c];
+      rec_i[t * ni + ci + c] = s.winding.empty() ? 0 : s.winding[3 * i + c];
+    }
+    rec_i[t * ni + ci + 3] = s.status.empty() ? AW_STATUS_OK : s.status[i];
+  }
+}
+
+ChunkWork whole_work(const Plan& plan, const IndexRange& range, std::vector<double>& rec_r,
+                     std::vector<std::int64_t>& rec_i) {
+  ChunkWork w;
+  w.first = range.first;
+  w.count = range.count;
+  if (range.count && plan.states) {
+    initial_records(plan, range.first, range.count, rec_r, rec_i);
+    w.rec_r = &rec_r;
+    w.rec_i = &rec_i;
+  }
+  return w;
 }
 
 }  // namespace arnoldweb::detail

@@ -21,12 +21,24 @@ class WorkQueue {
  public:
   virtual ~WorkQueue() = default;
   // Takes the outputs of `finished` (count 0 the first time) and returns the
-  // next range for a device that wants about `want` trajectories (count 0:
-  // nothing more for this device). `backend` holds the histograms of every
-  // range it ran, for a queue that saves a checkpoint now.
-  virtual IndexRange next(const IndexRange& finished, const ChunkOutput& out, std::uint64_t want,
-                          Backend& backend) = 0;
+  // next work for a device that wants about `want` trajectories (count 0:
+  // nothing more for this device), with the records it starts from where the
+  // plan has them (their storage is the queue's, valid until the next call).
+  // `backend` holds the histograms of every range it ran, for a queue that
+  // saves a checkpoint now.
+  virtual ChunkWork next(const ChunkWork& finished, const ChunkOutput& out, std::uint64_t want, Backend& backend) = 0;
 };
+
+// The records the trajectories [first, first + count) start from when the
+// plan gives their states (ensemble.initial = "file"): each one's carry
+// columns hold its state, the rest is zero.
+void initial_records(const Plan& plan, std::uint64_t first, std::uint64_t count, std::vector<double>& rec_r,
+                     std::vector<std::int64_t>& rec_i);
+
+// The work of a range over the whole schedule, with the records it starts
+// from (filled into rec_r, rec_i) where the plan gives states.
+ChunkWork whole_work(const Plan& plan, const IndexRange& range, std::vector<double>& rec_r,
+                     std::vector<std::int64_t>& rec_i);
 
 // Chunks start at multiples of this (ensemble.chunk if set, else kChunkGranule;
 // never above the largest chunk the device takes).
@@ -46,7 +58,7 @@ class LocalQueue final : public WorkQueue {
  public:
   using After = std::function<void(Backend&, bool stopping)>;
   LocalQueue(const Plan& plan, Reduction& reduction, const RunOptions& options, After after = {});
-  IndexRange next(const IndexRange& finished, const ChunkOutput& out, std::uint64_t want, Backend& backend) override;
+  ChunkWork next(const ChunkWork& finished, const ChunkOutput& out, std::uint64_t want, Backend& backend) override;
   bool stopped() const { return stopped_; }
   double seconds() const;  // since the queue was made
 
@@ -59,6 +71,8 @@ class LocalQueue final : public WorkQueue {
   std::uint64_t granule_;
   bool stopped_ = false;
   double start_;
+  std::vector<double> rec_r_;  // the records the work starts from
+  std::vector<std::int64_t> rec_i_;
 };
 
 }  // namespace arnoldweb::detail

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "arnoldweb/job.hpp"
+#include "arnoldweb/run.hpp"
 #include "run/reduction.hpp"
 
 namespace arnoldweb::detail {

@@ -6,7 +6,7 @@
 #include <chrono>
 #include <memory>
 
-#include "arnoldweb/job.hpp"
+#include "arnoldweb/run.hpp"
 #include "run/job_checkpoints.hpp"
 #include "run/part_run.hpp"
 

@@ -11,4 +11,8 @@ namespace arnoldweb::detail {
 Result run_part(const Plan& plan, Backend& backend, const RunOptions& options, Reduction& reduction,
                 const LocalQueue::After& after);
 
+// A plan that starts from given states (ensemble.initial = "file") has one
+// per trajectory; SceneError otherwise.
+void require_states(const Plan& plan);
+
 }  // namespace arnoldweb::detail

@@ -5,11 +5,112 @@
 #include <stdexcept>
 
 #include "aw_params.h"
+#include "plan/output_table.hpp"
+#include "plan/plan_params.hpp"
 #include "run/byte_stream.hpp"
+#include "run/chunk_loop.hpp"
 
 namespace arnoldweb::detail {
 
-Reduction::Reduction(const Plan& plan) : plan_(&plan), counters_(AW_C_COUNT, 0) {}
+namespace {
+
+// Appends columns [col, col + width) of every record of `arena` (stride reals or integers each) to `out`.
+template <class T>
+void columns(const std::vector<T>& arena, std::int64_t stride, std::int64_t col, int width, std::vector<T>& out) {
+  if (width <= 0 || stride <= 0) return;
+  const std::size_t n = arena.size() / static_cast<std::size_t>(stride);
+  for (std::size_t t = 0; t < n; ++t) {
+    const auto at = arena.begin() + static_cast<std::ptrdiff_t>(t * static_cast<std::size_t>(stride) + static_cast<std::size_t>(col));
+    out.insert(out.end(), at, at + width);
+  }
+}
+
+}  // namespace
+
+std::vector<Records> empty_records(const Plan& plan) {
+  std::vector<Records> records;
+  for (const RecordOutput* row : records_reported(plan.kernel.features)) {
+    Records& out = records.emplace_back();
+    out.name = row->name;
+    out.reals_per = static_cast<std::size_t>(row->reals);
+    out.ints_per = static_cast<std::size_t>(row->ints);
+  }
+  return records;
+}
+
+void append_records(const Plan& plan, const std::vector<double>& reals, const std::vector<std::int64_t>& ints,
+                    std::vector<Records>& records) {
+  const IntParams& ip = params(plan).ints;
+  std::size_t k = 0;
+  for (const RecordOutput* row : records_reported(plan.kernel.features)) {
+    columns(reals, ip.rec_reals, ip.rec_col_r[row->slot], row->reals, records.at(k).reals);
+    columns(ints, ip.rec_ints, ip.rec_col_i[row->slot], row->ints, records.at(k).ints);
+    ++k;
+  }
+}
+
+std::uint64_t slice_block(const Plan& plan) { return largest_chunk(plan); }
+
+Reduction::Reduction(const Plan& plan) : plan_(&plan), counters_(AW_C_COUNT, 0) {
+  if (plan.slices <= 1) return;
+  const std::uint64_t n = plan.scene.trajectories, b = slice_block(plan);
+  for (std::uint64_t first = 0; first < n; first += b) blocks_[first].count = std::min(b, n - first);
+}
+
+void Reduction::add(const ChunkWork& work, const ChunkOutput& out) {
+  const std::int64_t segments = plan_->windows * plan_->segments_per_window;
+  if (plan_->slices <= 1 || work.seg_end < 0 || work.seg_end >= segments) {
+    add(work.first, work.count, out);
+    if (plan_->slices > 1) {
+      Block& b = blocks_.at(work.first);
+      b.slices_done = plan_->slices;
+      b.carry = {};
+    }
+    return;
+  }
+  Block& b = blocks_.at(work.first);
+  if (b.count != work.count || work.seg_first != b.slices_done * plan_->slice_segments)
+    throw std::runtime_error("a time slice out of order");
+  b.carry = {out.rec_r, out.rec_i};
+  ++b.slices_done;
+  chunks.push_back(work.count);
+}
+
+ChunkWork Reduction::next_slice(std::vector<double>& rec_r, std::vector<std::int64_t>& rec_i) const {
+  ChunkWork w;
+  const Block* best = nullptr;
+  std::uint64_t at = 0;
+  for (const auto& [first, b] : blocks_)
+    if (b.slices_done < plan_->slices && (!best || b.slices_done < best->slices_done)) {
+      best = &b;
+      at = first;
+    }
+  if (!best) return w;
+  const std::int64_t segments = plan_->windows * plan_->segments_per_window;
+  w.first = at;
+  w.count = best->count;
+  w.seg_first = best->slices_done * plan_->slice_segments;
+  w.seg_end = std::min(segments, w.seg_first + plan_->slice_segments);
+  if (best->slices_done > 0) {
+    rec_r = best->carry.reals;
+    rec_i = best->carry.ints;
+  } else if (plan_->states) {
+    initial_records(*plan_, at, best->count, rec_r, rec_i);
+  } else {
+    return w;  // the kernel makes the initial states
+  }
+  w.rec_r = &rec_r;
+  w.rec_i = &rec_i;
+  return w;
+}
+
+std::uint64_t Reduction::progress() const {
+  if (plan_->slices <= 1) return completed_;
+  double done = 0;
+  for (const auto& [first, b] : blocks_)
+    done += static_cast<double>(b.count) * static_cast<double>(b.slices_done) / static_cast<double>(plan_->slices);
+  return static_cast<std::uint64_t>(done);
+}
 
 void Reduction::mark_done(std::uint64_t first, std::uint64_t count) {
   if (count == 0) return;
@@ -40,8 +141,7 @@ void Reduction::add(std::uint64_t first, std::uint64_t count, const ChunkOutput&
     if (out.group_stats[g] > emax_) emax_ = out.group_stats[g];
     esum_.add(out.group_stats[g + 1]);
   }
-  if (!out.initial_r.empty() || !out.final_r.empty() || !out.indicators.empty())
-    states_[first] = {out.initial_r, out.final_r, out.final_i, out.indicators};
+  if (!out.rec_r.empty() || !out.rec_i.empty()) records_[first] = {out.rec_r, out.rec_i};
   chunks.push_back(count);
 }
 
@@ -58,7 +158,9 @@ void Reduction::merge(const Reduction& o) {
   if (o.emax_ > emax_) emax_ = o.emax_;
   esum_.merge(o.esum_);
   add_histograms(o.histograms_);
-  for (const auto& [first, s] : o.states_) states_[first] = s;
+  for (const auto& [first, s] : o.records_) records_[first] = s;
+  for (const auto& [first, b] : o.blocks_)
+    if (b.slices_done > blocks_[first].slices_done) blocks_[first] = b;
   chunks.insert(chunks.end(), o.chunks.begin(), o.chunks.end());
   seconds = std::max(seconds, o.seconds);
 }
@@ -100,19 +202,15 @@ Result Reduction::result() const {
     }
     r.zoom.assign(histograms_.begin() + static_cast<std::ptrdiff_t>(plan_->frames * npix), histograms_.end());
   }
-  for (const auto& [first, s] : states_) {
-    r.initial_r.insert(r.initial_r.end(), s.initial_r.begin(), s.initial_r.end());
-    r.final_r.insert(r.final_r.end(), s.final_r.begin(), s.final_r.end());
-    r.final_i.insert(r.final_i.end(), s.final_i.begin(), s.final_i.end());
-    r.indicators.insert(r.indicators.end(), s.indicators.begin(), s.indicators.end());
-  }
+  r.records = empty_records(*plan_);
+  for (const auto& [first, chunk] : records_) append_records(*plan_, chunk.reals, chunk.ints, r.records);
   r.chunks = chunks;
   r.wall_seconds = seconds;
   return r;
 }
 
 namespace {
-constexpr std::uint64_t kReductionTag = 0x3230646552574121ull;  // "!AWRed02" (02: indicator arrays)
+constexpr std::uint64_t kReductionTag = 0x3430646552574121ull;  // "!AWRed04" (03: record arenas; 04: time slices)
 }
 
 std::string Reduction::image() const {
@@ -128,13 +226,19 @@ std::string Reduction::image() const {
   w.f64(emax_);
   w.text(esum_.image());
   w.array(histograms_);
-  w.u64(states_.size());
-  for (const auto& [first, s] : states_) {
+  w.u64(records_.size());
+  for (const auto& [first, s] : records_) {
     w.u64(first);
-    w.array(s.initial_r);
-    w.array(s.final_r);
-    w.array(s.final_i);
-    w.array(s.indicators);
+    w.array(s.reals);
+    w.array(s.ints);
+  }
+  w.u64(blocks_.size());
+  for (const auto& [first, b] : blocks_) {
+    w.u64(first);
+    w.u64(b.count);
+    w.u64(static_cast<std::uint64_t>(b.slices_done));
+    w.array(b.carry.reals);
+    w.array(b.carry.ints);
   }
   w.array(chunks);
   w.f64(seconds);
@@ -159,15 +263,29 @@ Reduction Reduction::read(const Plan& plan, const std::string& image) {
   r.histograms_ = in.array<std::uint64_t>();
   if (!r.histograms_.empty() && r.histograms_.size() != plan.hist_size)
     throw std::runtime_error("histograms of another size");
+  const IntParams& ip = params(plan).ints;
   const std::uint64_t chunks = in.u64();
   for (std::uint64_t k = 0; k < chunks; ++k) {
     const std::uint64_t first = in.u64();
-    States s;
-    s.initial_r = in.array<double>();
-    s.final_r = in.array<double>();
-    s.final_i = in.array<std::int64_t>();
-    s.indicators = in.array<double>();
-    r.states_[first] = std::move(s);
+    Arenas s;
+    s.reals = in.array<double>();
+    s.ints = in.array<std::int64_t>();
+    if ((ip.rec_reals ? s.reals.size() % static_cast<std::size_t>(ip.rec_reals) : s.reals.size()) != 0 ||
+        (ip.rec_ints ? s.ints.size() % static_cast<std::size_t>(ip.rec_ints) : s.ints.size()) != 0)
+      throw std::runtime_error("records of another layout");
+    r.records_[first] = std::move(s);
+  }
+  const std::uint64_t blocks = in.u64();
+  if (blocks != r.blocks_.size()) throw std::runtime_error("time slices of another plan");
+  for (std::uint64_t k = 0; k < blocks; ++k) {
+    const std::uint64_t first = in.u64();
+    auto it = r.blocks_.find(first);
+    if (it == r.blocks_.end() || in.u64() != it->second.count) throw std::runtime_error("time slices of another plan");
+    const std::uint64_t done = in.u64();
+    if (done > static_cast<std::uint64_t>(plan.slices)) throw std::runtime_error("more time slices than the plan's");
+    it->second.slices_done = static_cast<std::int64_t>(done);
+    it->second.carry.reals = in.array<double>();
+    it->second.carry.ints = in.array<std::int64_t>();
   }
   r.chunks = in.array<std::uint64_t>();
   r.seconds = in.f64();

@@ -6,7 +6,8 @@
 //  - the energy statistics are a maximum and an exact sum (exact_sum.hpp) of
 //    the devices' group sums (a device's groups are aligned to absolute
 //    trajectory indices when chunks start at multiples of kChunkGranule);
-//  - state records are kept by chunk and read out in trajectory order;
+//  - the records (the output table's per-trajectory outputs) are kept by
+//    chunk and read out in trajectory order, one Records per output;
 //  - the trajectories done are a set of index ranges.
 // A reduction has a byte image (checkpoints, messages between processes).
 #pragma once
@@ -34,12 +35,35 @@ struct IndexRange {
   std::uint64_t end() const { return first + count; }
 };
 
+// The per-trajectory outputs of a plan, empty (Result::records), and the
+// records of the trajectories of one arena appended to them (an arena holds
+// rec_reals reals and rec_ints integers per trajectory, as the kernel writes).
+std::vector<Records> empty_records(const Plan& plan);
+void append_records(const Plan& plan, const std::vector<double>& reals, const std::vector<std::int64_t>& ints,
+                    std::vector<Records>& records);
+
+// The block of trajectories a time-sliced plan runs per launch.
+std::uint64_t slice_block(const Plan& plan);
+
 class Reduction {
  public:
   explicit Reduction(const Plan& plan);
 
-  // The outputs of the chunk of trajectories [first, first + count).
+  // The outputs of the chunk of trajectories [first, first + count) run over
+  // their whole schedule.
   void add(std::uint64_t first, std::uint64_t count, const ChunkOutput& out);
+  // The outputs of a launch: over the whole schedule, or one time slice
+  // (plan.slices > 1: a slice that does not end the trajectories leaves their
+  // carry for the next).
+  void add(const ChunkWork& work, const ChunkOutput& out);
+
+  // Time slices (plan.slices > 1): the trajectories go in fixed blocks
+  // (slice_block), and every block finishes slice s before any begins s + 1
+  // (each slice advances every trajectory). The next block and slice, with the
+  // records it starts from in rec_r, rec_i (count 0: every slice is done).
+  ChunkWork next_slice(std::vector<double>& rec_r, std::vector<std::int64_t>& rec_i) const;
+  // Trajectory-slices done, in units of trajectories (progress: N when complete).
+  std::uint64_t progress() const;
   // Adds a device's histograms (plan.frames maps of plan.npix pixels, then
   // the zoom), accumulated over the chunks it ran.
   void add_histograms(const std::vector<std::uint64_t>& histograms);
@@ -72,12 +96,19 @@ class Reduction {
   double emax_ = 0;
   ExactSum esum_;
   std::vector<std::uint64_t> histograms_;  // plan.hist_size, or empty while none were added
-  struct States {
-    std::vector<double> initial_r, final_r;
-    std::vector<std::int64_t> final_i;
-    std::vector<double> indicators;
+  struct Arenas {
+    std::vector<double> reals;
+    std::vector<std::int64_t> ints;
   };
-  std::map<std::uint64_t, States> states_;  // by first trajectory of the chunk
+  std::map<std::uint64_t, Arenas> records_;  // the chunks' record arenas, by first trajectory of the chunk
+  // time slices: per block (by its first trajectory), how many slices are done
+  // and the carry the last one left (the block's records)
+  struct Block {
+    std::uint64_t count = 0;
+    std::int64_t slices_done = 0;
+    Arenas carry;
+  };
+  std::map<std::uint64_t, Block> blocks_;
 };
 
 }  // namespace arnoldweb::detail

@@ -63,26 +63,31 @@ std::string digest_map(const Result& r) {
   return d.hex();
 }
 
-std::string digest_initial_states(const Result& r) {
-  if (r.initial_r.empty()) return "";
+std::string digest_records(const Result& r, const std::string& name) {
+  const Records* rec = r.records_of(name);
+  if (!rec || (rec->reals.empty() && rec->ints.empty())) return "";
   Digest d;
-  d.add(r.initial_r);
+  d.add(rec->reals);
+  d.add(rec->ints);
   return d.hex();
 }
 
-std::string digest_indicators(const Result& r) {
-  if (r.indicators.empty()) return "";
-  Digest d;
-  d.add(r.indicators);
-  return d.hex();
+const Records* Result::records_of(const std::string& name) const {
+  for (const Records& r : records)
+    if (r.name == name) return &r;
+  return nullptr;
 }
 
-std::string digest_final_states(const Result& r) {
-  if (r.final_r.empty()) return "";
-  Digest d;
-  d.add(r.final_r);
-  d.add(r.final_i);
-  return d.hex();
+const std::vector<double>& Result::reals(const std::string& name) const {
+  static const std::vector<double> none;
+  const Records* r = records_of(name);
+  return r ? r->reals : none;
+}
+
+const std::vector<std::int64_t>& Result::ints(const std::string& name) const {
+  static const std::vector<std::int64_t> none;
+  const Records* r = records_of(name);
+  return r ? r->ints : none;
 }
 
 }  // namespace arnoldweb

@@ -5,12 +5,15 @@
 
 #include "run/chunk_loop.hpp"
 #include "run/part_run.hpp"
+#include "aw_params.h"
+#include "plan/checks.hpp"
 
 namespace arnoldweb {
 namespace detail {
 
 Result run_part(const Plan& plan, Backend& backend, const RunOptions& options, Reduction& reduction,
                 const LocalQueue::After& after) {
+  require_states(plan);
   const double before = reduction.seconds;
   LocalQueue queue(plan, reduction, options, after);
   drive_device(plan, backend, queue, options);
@@ -23,6 +26,18 @@ Result run_part(const Plan& plan, Backend& backend, const RunOptions& options, R
   r.trajectory_steps = static_cast<double>(r.completed) * static_cast<double>(plan.steps_per_trajectory);
   if (options.progress) options.progress->finish(r.completed, plan.scene.trajectories, r.wall_seconds);
   return r;
+}
+
+void require_states(const Plan& plan) {
+  if (plan.kernel.initial != AW_INITIAL_FILE) return;
+  if (!plan.states)
+    fail_at(plan.scene, "ensemble.initial",
+            "\"file\" starts every trajectory from a given state, and none were given (ensemble.file, or "
+            "initial= from Python)");
+  if (plan.states->count != plan.scene.trajectories)
+    fail_at(plan.scene, "ensemble.trajectories",
+            std::to_string(plan.states->count) + " states were given for " + std::to_string(plan.scene.trajectories) +
+                " trajectories");
 }
 
 }  // namespace detail

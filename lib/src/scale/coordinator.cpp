@@ -5,8 +5,10 @@
 #include <stdexcept>
 
 #include "arnoldweb/errors.hpp"
+#include "plan/checks.hpp"
 #include "run/chunk_loop.hpp"
 #include "run/job_checkpoints.hpp"
+#include "run/part_run.hpp"
 #include "scale/messages.hpp"
 
 namespace arnoldweb::detail {
@@ -127,13 +129,20 @@ class PartCoordinator {
 }  // namespace
 
 JobResult coordinate_job(const Job& job, Transport& transport, const RunOptions& options, JobObserver* observer,
-                         const DeviceInfo& device, const std::string& kernel) {
+                         const DeviceInfo& device, const std::function<std::string()>& kernel) {
+  for (const JobPart& part : job.parts) {
+    require_states(part.plan);
+    if (part.plan.slices > 1 && transport.workers() > 1)
+      fail_at(part.plan.scene, "run.slice",
+              "time slices carry every trajectory's state from one slice to the next in one process: run a "
+              "sliced scene on one device (" + std::to_string(transport.workers()) +
+                  " were given; run.slice = 0 spreads a run over devices)");
+  }
   JobResult jr;
   std::unique_ptr<JobCheckpoints> cp;
   if (options.checkpoint && options.checkpoint->sink) cp = std::make_unique<JobCheckpoints>(job, *options.checkpoint);
   PartReductions parts;
   if (cp) parts = cp->resume();
-  const std::string ranks = "; " + std::to_string(transport.workers()) + " devices (MPI ranks)";
   for (std::size_t k = 0; k < job.parts.size(); ++k) {
     const Plan& plan = job.parts[k].plan;
     Result r;
@@ -152,7 +161,7 @@ JobResult coordinate_job(const Job& job, Transport& transport, const RunOptions&
       double seconds = 0;
       const bool stopped = part.run(seconds);
       r = parts[k]->result();
-      r.kernel = kernel + ranks;
+      r.kernel = kernel();
       r.interrupted = stopped;
       if (o.progress) o.progress->finish(r.completed, plan.scene.trajectories, r.wall_seconds);
     }

@@ -9,13 +9,17 @@
 // assignment of chunks.
 #pragma once
 
-#include "arnoldweb/job.hpp"
+#include <functional>
+#include <string>
+
+#include "arnoldweb/run.hpp"
 #include "scale/transport.hpp"
 
 namespace arnoldweb::detail {
 
-// `device`, `kernel`: what the result names (the coordinator's own device).
+// `device`, `kernel`: what the results name (the devices, and their kernels
+// as prepared for the part that has just ended).
 JobResult coordinate_job(const Job& job, Transport& transport, const RunOptions& options, JobObserver* observer,
-                         const DeviceInfo& device, const std::string& kernel);
+                         const DeviceInfo& device, const std::function<std::string()>& kernel);
 
 }  // namespace arnoldweb::detail

@@ -26,6 +26,21 @@ void local_worker(const Job& job, Backend& backend, Channel& channel, const RunO
   }
 }
 
+namespace {
+
+// The kernels of several devices, for the result: one description if they
+// share it, else each device's; and how many devices ran.
+std::string kernels_of(const std::vector<Backend*>& devices) {
+  std::string one = devices[0]->kernel_description(), each;
+  bool same = true;
+  for (Backend* d : devices) {
+    same &= d->kernel_description() == one;
+    each += (each.empty() ? "" : " | ") + d->info().id + ": " + d->kernel_description();
+  }
+  return (same ? one : each) + "; " + std::to_string(devices.size()) + " devices of this process (threads)";
+}
+
+}  // namespace
 }  // namespace detail
 
 JobResult run_job_on_devices(const Job& job, const std::vector<Backend*>& devices, const RunOptions& options,
@@ -39,7 +54,10 @@ JobResult run_job_on_devices(const Job& job, const std::vector<Backend*>& device
                          std::cref(options), "worker " + std::to_string(w));
   JobResult r;
   try {
-    r = detail::coordinate_job(job, transport, options, observer, devices[0]->info(), devices[0]->kernel_description());
+    std::vector<DeviceInfo> infos;
+    for (Backend* d : devices) infos.push_back(d->info());
+    r = detail::coordinate_job(job, transport, options, observer, describe_devices(infos),
+                               [&] { return detail::kernels_of(devices); });
   } catch (...) {
     detail::Message end;
     end.type = detail::MessageType::End;
@@ -49,6 +67,12 @@ JobResult run_job_on_devices(const Job& job, const std::vector<Backend*>& device
   }
   for (auto& t : threads) t.join();
   return r;
+}
+
+JobResult run_job_on(const Job& job, const std::vector<Backend*>& devices, const RunOptions& options,
+                     JobObserver* observer) {
+  if (devices.size() == 1) return run_job(job, *devices[0], options, observer);
+  return run_job_on_devices(job, devices, options, observer);
 }
 
 }  // namespace arnoldweb

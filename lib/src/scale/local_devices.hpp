@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "arnoldweb/job.hpp"
+#include "arnoldweb/run.hpp"
 #include "scale/transport.hpp"
 
 namespace arnoldweb::detail {

@@ -18,9 +18,8 @@ std::string encode(const Message& m) {
   if (m.type == MessageType::Request) {
     w.array(m.out.counters);
     w.array(m.out.group_stats);
-    w.array(m.out.initial_r);
-    w.array(m.out.final_r);
-    w.array(m.out.final_i);
+    w.array(m.out.rec_r);
+    w.array(m.out.rec_i);
   }
   if (m.type == MessageType::Histograms || m.type == MessageType::Final) w.array(m.histograms);
   if (m.type == MessageType::Error) w.text(m.text);
@@ -41,9 +40,8 @@ Message decode(const std::string& bytes) {
   if (m.type == MessageType::Request) {
     m.out.counters = in.array<std::uint32_t>();
     m.out.group_stats = in.array<double>();
-    m.out.initial_r = in.array<double>();
-    m.out.final_r = in.array<double>();
-    m.out.final_i = in.array<std::int64_t>();
+    m.out.rec_r = in.array<double>();
+    m.out.rec_i = in.array<std::int64_t>();
   }
   if (m.type == MessageType::Histograms || m.type == MessageType::Final) m.histograms = in.array<std::uint64_t>();
   if (m.type == MessageType::Error) m.text = in.text();

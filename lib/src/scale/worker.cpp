@@ -11,10 +11,10 @@ namespace {
 
 class ChannelQueue final : public WorkQueue {
  public:
-  ChannelQueue(Channel& channel, std::uint64_t part, const RunOptions& options)
-      : channel_(channel), part_(part), options_(options) {}
+  ChannelQueue(Channel& channel, const Plan& plan, std::uint64_t part, const RunOptions& options)
+      : channel_(channel), plan_(plan), part_(part), options_(options) {}
 
-  IndexRange next(const IndexRange& finished, const ChunkOutput& out, std::uint64_t want, Backend& backend) override {
+  ChunkWork next(const ChunkWork& finished, const ChunkOutput& out, std::uint64_t want, Backend& backend) override {
     Message request;
     request.type = MessageType::Request;
     request.part = part_;
@@ -26,7 +26,7 @@ class ChannelQueue final : public WorkQueue {
     channel_.send(encode(request));
     for (;;) {
       const Message reply = decode(channel_.receive());
-      if (reply.type == MessageType::Range) return {reply.first, reply.count};
+      if (reply.type == MessageType::Range) return whole_work(plan_, {reply.first, reply.count}, rec_r_, rec_i_);
       if (reply.type == MessageType::Done) return {};
       if (reply.type != MessageType::Snapshot) throw std::runtime_error("unexpected message from the coordinator");
       Message h;
@@ -39,8 +39,11 @@ class ChannelQueue final : public WorkQueue {
 
  private:
   Channel& channel_;
+  const Plan& plan_;
   std::uint64_t part_;
   const RunOptions& options_;
+  std::vector<double> rec_r_;  // the records a range starts from (states given by the plan)
+  std::vector<std::int64_t> rec_i_;
 };
 
 }  // namespace
@@ -52,7 +55,7 @@ void work_job(const Job& job, Backend& backend, Channel& channel, const RunOptio
     if (m.type != MessageType::Begin || m.part >= job.parts.size())
       throw std::runtime_error("unexpected message from the coordinator");
     const Plan& plan = job.parts[m.part].plan;
-    ChannelQueue queue(channel, m.part, options);
+    ChannelQueue queue(channel, plan, m.part, options);
     drive_device(plan, backend, queue, options);
     Message final_hist;
     final_hist.type = MessageType::Final;

@@ -3,7 +3,7 @@
 // through the same device loop as one process (run/chunk_loop.hpp).
 #pragma once
 
-#include "arnoldweb/job.hpp"
+#include "arnoldweb/run.hpp"
 #include "scale/transport.hpp"
 
 namespace arnoldweb::detail {

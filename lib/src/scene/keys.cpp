@@ -7,9 +7,10 @@
 // Adding a key: a field in Scene (scene.hpp) and a row here.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "arnoldweb/methods.hpp"
-#include "physics/models.hpp"
+#include "physics/model_table.hpp"
 #include "scene/reader.hpp"
 
 namespace arnoldweb::scene_detail {
@@ -63,6 +64,10 @@ bool is_power_of_two(std::int64_t v) { return v > 0 && (v & (v - 1)) == 0; }
 // ------------------------------------------------------------- literals
 std::string boolean(bool b) { return b ? "true" : "false"; }
 std::string pair(const std::array<double, 2>& v) { return "[" + toml_double(v[0]) + ", " + toml_double(v[1]) + "]"; }
+// a pair of whole numbers (held as doubles), written as TOML integers: [64, 64]
+std::string integer_pair(const std::array<double, 2>& v) {
+  return "[" + std::to_string(static_cast<long long>(v[0])) + ", " + std::to_string(static_cast<long long>(v[1])) + "]";
+}
 std::string list(const std::vector<double>& v) {
   std::string s = "[";
   for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + toml_double(v[i]);
@@ -81,6 +86,9 @@ Literal bool_of(bool Scene::*f) {
 }
 Literal pair_of(std::array<double, 2> Scene::*f) {
   return [f](const Scene& s) { return pair(s.*f); };
+}
+Literal integer_pair_of(std::array<double, 2> Scene::*f) {
+  return [f](const Scene& s) { return integer_pair(s.*f); };
 }
 Literal text_of(std::string Scene::*f) {
   return [f](const Scene& s) { return toml_string(s.*f); };
@@ -160,88 +168,100 @@ const auto positive = [](double v) { return v > 0; };
 const auto width_ok = [](double w) { return w > 0 && w < 120; };
 const auto at_least_0 = [](std::int64_t v) { return v >= 0; };
 
-// model.kind and the parameters of the built-in models (docs/models.md).
+// model.kind and the parameters of the models, one row per key their
+// descriptors declare (lib/src/physics/models/<name>.cpp; docs/models.md).
 std::vector<std::string> model_name_list() {
   std::vector<std::string> n;
-  for (const detail::ModelRow& m : detail::models()) n.push_back(m.name);
+  for (const detail::ModelDescriptor& m : detail::models()) n.push_back(m.name);
   return n;
 }
-std::string triple(const std::array<double, 3>& v) {
-  return "[" + toml_double(v[0]) + ", " + toml_double(v[1]) + ", " + toml_double(v[2]) + "]";
-}
-std::string harmonics_literal(const Scene& s) {
-  std::string t = "[";
-  for (std::size_t j = 0; j < s.model_harmonics.size(); ++j) {
-    const auto& h = s.model_harmonics[j];
-    t += (j ? ", [" : "[");
-    for (int i = 0; i < 3; ++i) t += std::to_string(static_cast<long long>(h[i])) + ", ";
-    t += toml_double(h[3]) + ", " + toml_double(h[4]) + "]";
-  }
-  return t + "]";
-}
-constexpr int kMaxWaveNumber = 64;
-// [[kx, ky, kz, c, phi], ...]: k integers, c and phi finite, 1 to kMaxHarmonics rows.
-void read_harmonics(Reader& r, const std::string& key, const toml::node& n, Scene& s) {
-  const toml::array* rows = n.as_array();
-  if (!rows) return r.bad(key, n, false);
-  if (rows->empty() || rows->size() > static_cast<std::size_t>(detail::kMaxHarmonics))
-    return r.bad(key, n, true, " (" + std::to_string(rows->size()) + " harmonics)");
-  std::vector<std::array<double, 5>> out;
-  for (std::size_t j = 0; j < rows->size(); ++j) {
-    const std::string where = " (harmonic " + std::to_string(j + 1) + ")";
-    const toml::array* row = (*rows)[j].as_array();
-    if (!row || row->size() != 5) return r.bad(key, n, true, where + ": each harmonic is [kx, ky, kz, c, phi]");
-    std::array<double, 5> h{};
-    for (std::size_t i = 0; i < 5; ++i) {
-      const toml::node& e = (*row)[i];
-      if (auto f = e.as_floating_point()) h[i] = f->get();
-      else if (auto v = e.as_integer()) h[i] = static_cast<double>(v->get());
-      else return r.bad(key, n, true, where + ": element " + std::to_string(i + 1) + " is not a number");
-      if (!std::isfinite(h[i])) return r.bad(key, n, true, where + ": not finite");
-    }
-    for (int i = 0; i < 3; ++i)
-      if (h[i] != std::floor(h[i]) || std::fabs(h[i]) > kMaxWaveNumber)
-        return r.bad(key, n, true, where + ": k must be integers from -" + std::to_string(kMaxWaveNumber) +
-                                       " to " + std::to_string(kMaxWaveNumber));
-    if (h[0] == 0 && h[1] == 0 && h[2] == 0) return r.bad(key, n, true, where + ": k = 0 is a constant");
-    out.push_back(h);
-  }
-  s.model_harmonics = out;
-}
-Read triple_into(std::array<double, 3> Scene::*f, std::function<bool(double)> ok) {
-  return [f, ok](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
-    std::vector<double> v;
-    if (r.reals(key, n, v, 3, [&](const std::vector<double>& x) { return ok(x[0]) && ok(x[1]) && ok(x[2]); }))
-      s.*f = {v[0], v[1], v[2]};
+
+// A model parameter's values as the echo writes them: a number, an array, or
+// an array of rows (integer columns without a fraction).
+std::string parameter_literal(const detail::ModelParameter& p, const std::vector<double>& v) {
+  auto number = [&](std::size_t i) {
+    return static_cast<int>(i % static_cast<std::size_t>(p.width)) < p.integer_columns
+               ? std::to_string(static_cast<long long>(v[i]))
+               : toml_double(v[i]);
   };
+  if (p.is_number()) return v.empty() ? std::string() : number(0);
+  std::string t = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const bool row_start = i % static_cast<std::size_t>(p.width) == 0;
+    if (p.max_rows && row_start) t += i ? "], [" : "[";
+    else if (i) t += ", ";
+    t += number(i);
+  }
+  return t + (p.max_rows && !v.empty() ? "]]" : "]");
+}
+
+// Reads a model parameter: a number, an array of `width`, or 1 to max_rows
+// arrays of `width`; every value finite and within [lo, hi]; then its own checks.
+void read_parameter(const detail::ModelParameter& p, Reader& r, const std::string& key, const toml::node& n,
+                    Scene& s) {
+  auto in_range = [&](double x) { return x >= p.lo && x <= p.hi; };
+  std::vector<double> v;
+  if (p.is_number()) {
+    double x = 0;
+    if (!r.real(key, n, x, in_range)) return;
+    v = {x};
+  } else if (!p.max_rows) {
+    if (!r.reals(key, n, v, static_cast<std::size_t>(p.width), [&](const std::vector<double>& x) {
+          return std::all_of(x.begin(), x.end(), in_range);
+        }))
+      return;
+  } else {
+    const toml::array* rows = n.as_array();
+    if (!rows) return r.bad(key, n, false);
+    if (rows->empty() || rows->size() > static_cast<std::size_t>(p.max_rows))
+      return r.bad(key, n, true, " (" + std::to_string(rows->size()) + " rows)");
+    for (std::size_t j = 0; j < rows->size(); ++j) {
+      const std::string where = " (row " + std::to_string(j + 1) + ")";
+      const toml::array* row = (*rows)[j].as_array();
+      if (!row || row->size() != static_cast<std::size_t>(p.width))
+        return r.bad(key, n, true, where + ": each row has " + std::to_string(p.width) + " numbers");
+      for (const toml::node& e : *row) {
+        double x = 0;
+        if (auto f = e.as_floating_point()) x = f->get();
+        else if (auto i = e.as_integer()) x = static_cast<double>(i->get());
+        else return r.bad(key, n, true, where + ": an element is not a number");
+        if (!std::isfinite(x) || !in_range(x)) return r.bad(key, n, true, where + ": out of range");
+        v.push_back(x);
+      }
+    }
+  }
+  if (p.check) {
+    const std::string why = p.check(v);
+    if (!why.empty()) return r.bad(key, n, true, why);
+  }
+  s.model_values[key] = v;
 }
 
 void model_kind_keys(Rows& add) {
+  std::string kinds;
+  for (const detail::ModelDescriptor& m : detail::models())
+    kinds += (kinds.empty() ? "" : ", ") + ("\"" + m.name + "\" (" + m.title + ")");
   add("model.kind", "string", quoted_list(model_name_list(), " or "), one_of(model_name_list()),
       text_of(&Scene::model_kind), choice_into(&Scene::model_kind, model_name_list),
-      "The Hamiltonian H = T(P) + V(X) (`arnoldweb models` lists them, docs/models.md): \"seibert2011\" "
-      "(the paper's), \"fgl\" (Froeschle, Guzzo & Lega 2000), \"fourier\" (harmonics given in the scene).");
-  add("model.epsilon", "float", ">= 0 and <= 1", "a float from 0 to 1", real_of(&Scene::model_epsilon),
-      real_into(&Scene::model_epsilon, [](double e) { return e >= 0 && e <= 1; }),
-      "fgl: the perturbation eps of H = I1^2/2 + I2^2/2 + I3 + eps / (cos phi1 + cos phi2 + cos phi3 + 4) "
-      "(their pictures: 0.001 to 0.04).");
-  add("model.harmonics", "array of [kx, ky, kz, c, phi]",
-      "1 to " + std::to_string(detail::kMaxHarmonics) + " harmonics, k integers in [-" +
-          std::to_string(kMaxWaveNumber) + ", " + std::to_string(kMaxWaveNumber) + "], not all 0",
-      "an array of 1 to " + std::to_string(detail::kMaxHarmonics) +
-          " harmonics [kx, ky, kz, c, phi] (k integers from -" + std::to_string(kMaxWaveNumber) + " to " +
-          std::to_string(kMaxWaveNumber) + ", not all 0; c, phi finite)",
-      harmonics_literal, read_harmonics,
-      "fourier: V = sum c cos(kx x + ky y + kz z + phi), phi in radians. The default is the paper's "
-      "potential cos x cos y (1 + cos 2z) in six harmonics.");
-  add("model.kinetic_a", "array of 3 floats", ">= 0", "an array [a_x, a_y, a_z] of floats >= 0",
-      [](const Scene& s) { return triple(s.model_kinetic_a); },
-      triple_into(&Scene::model_kinetic_a, [](double a) { return a >= 0 && a <= 1e6; }),
-      "fourier and expression: the quadratic kinetic coefficients of T = sum a_i p_i^2/2 + b_i p_i.");
-  add("model.kinetic_b", "array of 3 floats", "finite", "an array [b_x, b_y, b_z] of finite floats",
-      [](const Scene& s) { return triple(s.model_kinetic_b); },
-      triple_into(&Scene::model_kinetic_b, [](double b) { return std::fabs(b) <= 1e6; }),
-      "fourier and expression: the linear kinetic coefficients of T = sum a_i p_i^2/2 + b_i p_i.");
+      "The Hamiltonian H = T(P) + V(X) (`arnoldweb models` lists them, docs/models.md): " + kinds + ".");
+  // one row per key, in the order the models declare them; a key several models share says so
+  std::vector<std::string> done;
+  for (const detail::ModelDescriptor& m : detail::models())
+    for (const detail::ModelParameter& p : m.parameters) {
+      if (std::find(done.begin(), done.end(), p.key) != done.end()) continue;
+      done.push_back(p.key);
+      std::string owners;
+      for (const detail::ModelDescriptor& o : detail::models())
+        if (o.parameter(p.key)) owners += (owners.empty() ? "" : " and ") + o.name;
+      const detail::ModelParameter param = p;
+      add(p.key, p.type, p.allowed, p.must,
+          [param](const Scene& s) {
+            const auto it = s.model_values.find(param.key);
+            return parameter_literal(param, it != s.model_values.end() ? it->second : param.default_value);
+          },
+          [param](Reader& r, const std::string& key, const toml::node& n, Scene& s) { read_parameter(param, r, key, n, s); },
+          owners + ": " + p.help);
+    }
 }
 
 // model.kind = "expression": the potential and its parameters (docs/models.md)
@@ -283,10 +303,12 @@ void expression_model_keys(Rows& add) {
 }
 
 void model_keys(Rows& add) {
-  add("model.energy", "float", "> -2 and <= 1e6",
-      "a float greater than -2 and at most 1e6 (for E <= -2 no phase space is accessible)", real_of(&Scene::energy),
-      real_into(&Scene::energy, [](double e) { return e > kMinEnergy && e <= kMaxEnergy; }),
-      "Total energy E of every trajectory; the effective perturbation is 2/E.");
+  add("model.energy", "float", ">= -1e6 and <= 1e6",
+      "a float from -1e6 to 1e6 (the model must leave phase space at that energy: the planner checks)",
+      real_of(&Scene::energy),
+      real_into(&Scene::energy, [](double e) { return e >= -kMaxEnergy && e <= kMaxEnergy; }),
+      "Total energy E of every trajectory (the paper's model: the effective perturbation is 2/E; an energy "
+      "that leaves no phase space to a model is refused when the scene is planned).");
   model_kind_keys(add);
   expression_model_keys(add);
 }
@@ -304,7 +326,25 @@ void ensemble_keys(Rows& add) {
       "How initial states are drawn; X is uniform on the accessible part of the torus. "
       "\"shell\": direction of P uniform on the sphere, speed sqrt(2 (E - V(X))). \"cap\", "
       "\"box\": direction uniform in ensemble.cap or ensemble.box. \"gaussian\": see "
-      "ensemble.gaussian. \"grid\": the points of ensemble.grid, in order.");
+      "ensemble.gaussian. \"grid\": the points of ensemble.grid, in order. \"file\": the states of "
+      "ensemble.file, one trajectory per state (docs/outputs.md, \"State files\").");
+  add("ensemble.file", "string", "an existing file", "a string naming an existing file (HDF5, docs/outputs.md)",
+      [](const Scene& s) { return s.initial_file.empty() ? std::string() : toml_string(s.initial_file); },
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        std::string path;
+        if (!r.text(key, n, path, [](const std::string& p) { return !p.empty(); })) return;
+        std::error_code ec;
+        const auto status = std::filesystem::status(path, ec);
+        if (!std::filesystem::exists(status))
+          r.bad(key, n, true, " (no such file)");
+        else if (!std::filesystem::is_regular_file(status))
+          r.bad(key, n, true, std::filesystem::is_directory(status) ? " (it is a directory)" : " (not a regular file)");
+        else
+          s.initial_file = path;
+      },
+      "For ensemble.initial = \"file\": the HDF5 file of the initial states (positions, momenta, "
+      "optional winding counts and time; or the /final group of a states.h5), relative to the current "
+      "directory. Read and checked when the scene is planned (docs/outputs.md, \"State files\").");
   add("ensemble.chunk", "integer", ">= 0 (0 = automatic)", "an integer >= 0 (0 = automatic)",
       integer_of(&Scene::chunk), integer_into(&Scene::chunk, at_least_0),
       "Trajectories per kernel launch; 0 lets the runner choose. Does not change the results.");
@@ -386,12 +426,28 @@ void run_keys(Rows& add) {
       real_into(&Scene::average, positive), "Averaging window dt of the velocity, in T; a multiple of integrator.step.");
   add("run.duration", "float", "> 0", "a finite float greater than 0 (in units of T)", real_of(&Scene::duration),
       real_into(&Scene::duration, positive), "Propagation time t_p, in T; a multiple of run.average.");
-  const std::string forms = "\"auto\", \"cpu\", \"opencl:N\" or \"cuda:N\"";
-  add("run.device", "string", forms, forms + " (N = 0, 1, ...: the index in `arnoldweb devices`)",
+  add("run.slice", "float", ">= 0", "a finite float >= 0 (in units of T; 0: no slices)", real_of(&Scene::slice),
+      real_into(&Scene::slice, [](double v) { return v >= 0; }),
+      "Time slices of long trajectories, in T (0: none): each slice advances every trajectory of the run by this "
+      "much, and a checkpoint between slices holds their whole state (docs/cluster.md, \"Long trajectories\"); a "
+      "multiple of observe.energy_error.every (of run.average without energy tracking).");
+  const std::string forms = "\"auto\", \"all\", \"cpu\", \"opencl:N\", \"cuda:N\" or a list \"cuda:0,cuda:1\"";
+  add("run.device", "string", forms,
+      forms + " (N = 0, 1, ...: the index in `arnoldweb devices`; a list names each device once)",
       text_of(&Scene::device),
-      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) { r.text(key, n, s.device, valid_device); },
-      "Where to run. \"auto\" picks the default device; whether the device exists is checked "
-      "when the run starts.");
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        std::string device;
+        if (!r.text(key, n, device, valid_device)) return;
+        if (const std::string twice = repeated_device(device); !twice.empty()) {
+          r.bad(key, n, true, " (" + twice + " is listed twice)");
+          return;
+        }
+        s.device = device;
+      },
+      "Where to run. \"auto\" picks the default device; a list of ids (\"cuda:0,cuda:1\") runs on "
+      "every device listed, from one process (under mpirun, each rank drives its entry); \"all\" "
+      "is every GPU of the machine (the CUDA devices, else the OpenCL GPUs; without a GPU, the "
+      "default device). Whether the devices exist is checked when the run starts (docs/cluster.md).");
   // run.checkpoint_every (checkpoints, issue 15): "auto", "off", seconds or "<number> <unit>"
   add("run.checkpoint_every", "float or string", "\"auto\", \"off\", seconds > 0, or \"N s\", \"N min\", \"N h\"",
       "\"auto\", \"off\", a number of seconds greater than 0, or a string such as \"10 min\" "
@@ -527,8 +583,8 @@ void indicator_keys(Rows& add) {
       "fixed = p, position = [x, y, z] }",
       [](const Scene& s) {
         return "{ kind = " + toml_string(s.grid_kind) + ", nside = " + std::to_string(s.grid_nside) +
-               ", resolution = " + pair(s.grid_resolution) + ", range1 = " + pair(s.grid_range1) +
-               ", range2 = " + pair(s.grid_range2) + ", axes = " + pair(s.grid_axes) +
+               ", resolution = " + integer_pair(s.grid_resolution) + ", range1 = " + pair(s.grid_range1) +
+               ", range2 = " + pair(s.grid_range2) + ", axes = " + integer_pair(s.grid_axes) +
                ", fixed = " + toml_double(s.grid_fixed) + ", position = " + list(s.grid_position) + " }";
       },
       table_only(),
@@ -549,7 +605,7 @@ void indicator_keys(Rows& add) {
       integer_into(&Scene::grid_nside, [](std::int64_t v) { return v <= 1024 && is_power_of_two(v); }),
       "HEALPix resolution of a \"healpix\" grid: 12 nside^2 initial conditions.");
   add("ensemble.grid.resolution", "array of 2 integers", "1 to 65536 each", "an array [n1, n2] of integers from 1 to 65536",
-      pair_of(&Scene::grid_resolution),
+      integer_pair_of(&Scene::grid_resolution),
       pair_into(&Scene::grid_resolution, [whole](double a, double b) { return whole(a) && whole(b); }),
       "Points along the two gridded coordinates of a \"lonlat\" or \"plane\" grid (n1 x n2 initial conditions).");
   add("ensemble.grid.range1", "array of 2 floats", "[from, to], from < to", "an array [from, to] with from < to",
@@ -559,7 +615,7 @@ void indicator_keys(Rows& add) {
       pair_of(&Scene::grid_range2), pair_into(&Scene::grid_range2, [](double a, double b) { return a < b; }),
       "Range of the second gridded momentum of a \"plane\" grid.");
   add("ensemble.grid.axes", "array of 2 integers", "two different of 0, 1, 2", "an array [i, j] of two different integers 0, 1 or 2",
-      pair_of(&Scene::grid_axes), pair_into(&Scene::grid_axes, [](double a, double b) {
+      integer_pair_of(&Scene::grid_axes), pair_into(&Scene::grid_axes, [](double a, double b) {
         auto axis = [](double v) { return v == 0 || v == 1 || v == 2; };
         return axis(a) && axis(b) && a != b;
       }),

@@ -70,10 +70,10 @@ std::vector<std::string> names_of(const Table& t) {
   for (const auto& e : t) n.push_back(e.name);
   return n;
 }
-bool valid_device(const std::string& id);
+// run.device: "auto", "all", or one or more device ids separated by commas (device_spec.cpp).
+bool valid_device(const std::string& device);
 
 // Limits shared by the checks and the key table.
-constexpr double kMinEnergy = -2.0;  // exclusive: the bottom of V
 constexpr double kMaxEnergy = 1e6;
 constexpr std::int64_t kMaxTrajectories = 10'000'000'000'000;  // 1e13
 constexpr double kMaxStep = 1.0;                                // in T

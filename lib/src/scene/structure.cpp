@@ -147,7 +147,7 @@ std::string keys_of(const std::string& parent) {
 }
 
 const std::vector<std::string>& initial_kinds() {
-  static const std::vector<std::string> k = {"shell", "cap", "box", "gaussian", "grid"};
+  static const std::vector<std::string> k = {"shell", "cap", "box", "gaussian", "grid", "file"};
   return k;
 }
 
@@ -161,18 +161,6 @@ const std::vector<MathName>& math_names() {
   static const std::vector<MathName> n = {{"portable", MathMode::Portable},
                                           {"native", MathMode::Native}};
   return n;
-}
-
-bool valid_device(const std::string& id) {
-  if (id == "auto" || id == "cpu") return true;
-  for (const char* prefix : {"opencl:", "cuda:"}) {
-    const std::string p = prefix;
-    if (id.compare(0, p.size(), p) != 0) continue;
-    const std::string n = id.substr(p.size());
-    return !n.empty() && n.size() <= 9 &&
-           std::all_of(n.begin(), n.end(), [](char c) { return c >= '0' && c <= '9'; });
-  }
-  return false;
 }
 
 void check_structure(const toml::table& root, Problems& problems) { check_table(root, "", problems); }

@@ -11,7 +11,9 @@
 #include "aw_params.h"
 #include "backends/backends.hpp"
 #include "backends/compute_device.hpp"
+#include "backends/cpu/cpu_isa.hpp"
 #include "backends/cpu/cpu_kernel.hpp"
+#include "backends/cpu/cpu_runtime_kernel.hpp"
 
 namespace arnoldweb::detail {
 namespace {
@@ -55,10 +57,6 @@ class HostMemory final : public DeviceMemory {
 
 HostMemory& host(DeviceMemory& m) { return static_cast<HostMemory&>(m); }
 const HostMemory& host(const DeviceMemory& m) { return static_cast<const HostMemory&>(m); }
-template <class T>
-T* ptr(DeviceMemory* m) {
-  return m ? static_cast<T*>(host(*m).data()) : nullptr;
-}
 
 class CpuDevice final : public ComputeDevice {
  public:
@@ -69,16 +67,21 @@ class CpuDevice final : public ComputeDevice {
   void compile(const KernelConfig& k) override {
     const bool fl = k.precision == Precision::Float;
     const bool native = k.math == MathMode::Native;
-    if (!k.model_source.empty())  // docs/models.md, "Expression models": why the cpu backend does not
-      throw DeviceError(info_.id, "", 0,
-                        "the cpu backend runs the built-in models only (its kernels are compiled ahead of "
-                        "time); run model.kind = \"expression\" on an OpenCL device such as PoCL "
-                        "(--device opencl:0; `arnoldweb devices` lists them) or on cuda:N");
-    kernel_ = cpu_kernel(k.model, fl, native);
-    if (!kernel_)
-      throw DeviceError(info_.id, "", 0, "this build has no cpu kernel for model " + std::to_string(k.model));
+    const CpuIsa& isa = cpu_isa_selected();  // the best compiled set this CPU runs, or ARNOLDWEB_CPU_ISA
+    const std::string lanes = std::to_string(fl ? isa.lanes_float : isa.lanes_double) + " lanes";
+    if (!k.model_source.empty()) {  // an expression model: compiled now, for the same set (docs/models.md)
+      const CpuRuntimeKernel rk = cpu_expression_kernel(k.model_source, fl, native);
+      kernel_ = rk.kernel;
+      variant_ = rk.variant + " (" + isa.name + ", " + lanes + "; compiled at run time by " + rk.compiler + "; " +
+                 rk.origin + ")";
+    } else {
+      kernel_ = cpu_kernel_for(k.model, fl, native, isa);
+      if (!kernel_)
+        throw DeviceError(info_.id, "", 0, "this build has no cpu kernel for model " + std::to_string(k.model));
+      variant_ = std::string("cpu_") + (fl ? "float" : "double") + "_" + (native ? "native" : "portable") + " (" +
+                 isa.name + ", " + lanes + ")";
+    }
     config_ = k;
-    variant_ = std::string("cpu_") + (fl ? "float" : "double") + "_" + (native ? "native" : "portable");
   }
   std::string kernel_description() const override { return variant_; }
 
@@ -101,25 +104,18 @@ class CpuDevice final : public ComputeDevice {
     return s;
   }
 
-  void launch_ensemble(std::uint64_t first, std::uint64_t count, const LaunchShape&,
-                       const EnsembleBuffers& b) override {
+  void launch_ensemble(const LaunchRange& r, const LaunchShape&, const EnsembleBuffers& b) override {
     CpuChunk c;
     c.features = config_.features;
     c.stages = config_.stages;
     c.kick_first = config_.kick_first ? 1 : 0;
     c.gradient = config_.gradient ? 1 : 0;
     c.initial = config_.initial;
-    c.first = first;
-    c.end = first + count;
-    c.rp = host(*b.reals).data();
-    c.ip = host(*b.ints).data();
-    c.map = ptr<std::uint32_t>(b.counts);
-    c.counters = ptr<std::uint32_t>(b.counters);
-    c.initial_r = ptr<void>(b.initial_r);
-    c.final_r = ptr<void>(b.final_r);
-    c.final_i = ptr<std::int64_t>(b.final_i);
-    c.indicators = ptr<void>(b.indicators);
-    c.group_stats = ptr<void>(b.group_stats);
+    c.first = r.first;
+    c.end = r.first + r.count;
+    c.seg_first = r.seg_first;
+    c.seg_end = r.seg_end;
+    for (int i = 0; i < AW_BUF_COUNT; ++i) c.buffers[i] = b.at[i] ? host(*b.at[i]).data() : nullptr;
     kernel_(c);
   }
 

@@ -6,6 +6,8 @@
 
 #include <cstdint>
 
+#include "aw_params.h"
+
 namespace arnoldweb::detail {
 
 // Trajectories are processed in blocks of this many; every block reports one
@@ -18,16 +20,11 @@ struct CpuChunk {
   int kick_first = 1;
   int gradient = 0;  // force-gradient kicks (aw_config::gradient)
   int initial = 0;
-  std::uint64_t first = 0, end = 0;  // trajectories [first, end)
-  const void* rp = nullptr;          // aw_rparams of the variant's precision
-  const void* ip = nullptr;          // aw_iparams
-  std::uint32_t* map = nullptr;      // the histograms' 32-bit counts
-  std::uint32_t* counters = nullptr; // AW_C_COUNT
-  void* initial_r = nullptr;         // reals of the variant's precision
-  void* final_r = nullptr;
-  std::int64_t* final_i = nullptr;
-  void* indicators = nullptr;        // AW_IND_REALS reals per trajectory (chaos indicators)
-  void* group_stats = nullptr;       // 2 reals of the variant's precision per block
+  std::uint64_t first = 0, end = 0;       // trajectories [first, end)
+  std::int64_t seg_first = 0, seg_end = 0;  // over the segments [seg_first, seg_end) of their schedule
+  // the kernel's buffers in host memory, indexed by AW_BUF_* (aw_params.h:
+  // AW_BUFFERS); reals in the variant's precision; null where the plan needs none
+  void* buffers[AW_BUF_COUNT] = {};
 };
 
 using CpuKernel = void (*)(const CpuChunk&);

@@ -103,28 +103,23 @@ class CudaDevice final : public ComputeDevice {
     return s;
   }
 
-  void launch_ensemble(std::uint64_t first, std::uint64_t count, const LaunchShape& s,
-                       const EnsembleBuffers& b) override {
+  void launch_ensemble(const LaunchRange& r, const LaunchShape& s, const EnsembleBuffers& b) override {
     if (!ensemble_) throw DeviceError(info_.id, "", 0, "launch before compile");
     if (s.groups > static_cast<std::uint64_t>(INT_MAX))
       throw DeviceError(info_.id, "", 0, "chunk too large for one launch; set ensemble.chunk smaller");
     select();
-    unsigned long long chunk_first = first, chunk_end = first + count;
-    void* rp = dptr(b.reals);
-    void* ip = dptr(b.ints);
-    void* map = dptr(b.counts);
-    void* counters = dptr(b.counters);
-    void* initial = dptr(b.initial_r);
-    void* final_r = dptr(b.final_r);
-    void* final_i = dptr(b.final_i);
-    void* indicators = dptr(b.indicators);
-    void* stats = dptr(b.group_stats);
-    void* args[] = {&chunk_first, &chunk_end, &rp, &ip, &map, &counters, &initial, &final_r, &final_i, &indicators,
-                    &stats};
+    unsigned long long chunk_first = r.first, chunk_end = r.first + r.count;
+    long long seg_first = r.seg_first, seg_end = r.seg_end;
+    void* buffers[AW_BUF_COUNT];
+    void* args[4 + AW_BUF_COUNT] = {&chunk_first, &chunk_end, &seg_first, &seg_end};
+    for (int i = 0; i < AW_BUF_COUNT; ++i) {
+      buffers[i] = dptr(b.at[i]);
+      args[4 + i] = &buffers[i];
+    }
     cuda_check(cudaLaunchKernel(reinterpret_cast<const void*>(ensemble_), dim3(static_cast<unsigned>(s.groups)),
                                 dim3(block_), args, 2 * block_ * real_size_, stream_.get()),
                info_.id, "cudaLaunchKernel",
-               "aw_ensemble over trajectories [" + std::to_string(first) + ", " + std::to_string(first + count) + ")");
+               "aw_ensemble over trajectories [" + std::to_string(r.first) + ", " + std::to_string(r.first + r.count) + ")");
   }
 
   void launch_fold(DeviceMemory& total, DeviceMemory& part, std::uint64_t n) override {

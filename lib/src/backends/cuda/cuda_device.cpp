@@ -3,6 +3,7 @@
 
 #include "backends/backends.hpp"
 #include "backends/cuda/cuda_error.hpp"
+#include "backends/cuda/nvrtc_api.hpp"
 
 namespace arnoldweb::detail {
 namespace {
@@ -57,6 +58,12 @@ int cuda_device_count(std::string& problem) {
   if (e != cudaSuccess) {
     problem = "cuda: cudaGetDeviceCount returned " + std::to_string(static_cast<int>(e)) + " (" +
               cuda_status_text(e) + ")";
+    return 0;
+  }
+  // the kernels are compiled at run time: without NVRTC the devices cannot run
+  std::string nvrtc_problem;
+  if (!nvrtc_api(&nvrtc_problem)) {
+    problem = "cuda: " + std::to_string(n) + " device(s), but " + nvrtc_problem;
     return 0;
   }
   return n;

@@ -2,19 +2,13 @@
 // kernel_cache.hpp).
 #include "backends/cuda/kernel_cache.hpp"
 
-#include <unistd.h>
 #include <xxhash.h>
 
-#include <atomic>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <mutex>
-#include <sstream>
 
+#include "backends/kernel_disk_cache.hpp"
 #include "backends/kernel_sources.hpp"
 
 namespace fs = std::filesystem;
@@ -22,8 +16,7 @@ namespace fs = std::filesystem;
 namespace arnoldweb::detail {
 namespace {
 
-// File layout: magic, then the XXH64 of the payload (8 bytes, little end
-// first), then the payload (the image).
+// Cache files: magic, then the XXH64 of the image, then the image (kernel_disk_cache.hpp).
 constexpr char kMagic[8] = {'A', 'W', 'C', 'U', 'D', 'A', '0', '1'};
 
 std::mutex cache_mutex;
@@ -64,72 +57,12 @@ std::string file_name(const std::string& key, const CudaTarget& target) {
   std::string fp = "arnoldweb cuda image v1\nnvrtc " + nvrtc_version() + "\n" + key;
   fp.append(reinterpret_cast<const char*>(&src.low64), 8);
   fp.append(reinterpret_cast<const char*>(&src.high64), 8);
-  const XXH128_hash_t h = XXH3_128bits(fp.data(), fp.size());
-  char hex[33];
-  std::snprintf(hex, sizeof hex, "%016llx%016llx", static_cast<unsigned long long>(h.high64),
-                static_cast<unsigned long long>(h.low64));
-  return std::string(hex) + (target.cubin ? ".cubin" : ".ptx");
-}
-
-std::string le64(std::uint64_t v) {
-  std::string s(8, '\0');
-  for (int i = 0; i < 8; ++i) s[i] = static_cast<char>((v >> (8 * i)) & 0xff);
-  return s;
-}
-
-bool read_disk(const fs::path& file, std::string& payload) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream buf;
-  buf << in.rdbuf();
-  const std::string all = buf.str();
-  if (all.size() <= 16 || std::memcmp(all.data(), kMagic, 8) != 0) return false;
-  payload = all.substr(16);
-  return all.compare(8, 8, le64(XXH64(payload.data(), payload.size(), 0))) == 0;
-}
-
-void write_disk(const fs::path& file, const std::string& payload) {
-  try {
-    std::error_code ec;
-    fs::create_directories(file.parent_path(), ec);
-    if (ec) return;
-    static std::atomic<unsigned> serial{0};
-    const fs::path tmp = file.string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                         std::to_string(serial++);
-    {
-      std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-      if (!out) return;
-      out.write(kMagic, 8);
-      const std::string sum = le64(XXH64(payload.data(), payload.size(), 0));
-      out.write(sum.data(), 8);
-      out.write(payload.data(), static_cast<std::streamsize>(payload.size()));
-      out.close();
-      if (!out) {
-        fs::remove(tmp, ec);
-        return;
-      }
-    }
-    fs::rename(tmp, file, ec);
-    if (ec) fs::remove(tmp, ec);
-  } catch (...) {
-    // a cache that cannot be written is no error
-  }
+  return kernel_cache_file_name(fp, target.cubin ? ".cubin" : ".ptx");
 }
 
 }  // namespace
 
-std::string cuda_cache_dir() {
-  const char* env = std::getenv("ARNOLDWEB_CACHE_DIR");
-  if (env) {
-    if (!*env || std::strcmp(env, "off") == 0 || std::strcmp(env, "0") == 0) return {};
-    return (fs::path(env) / "cuda").string();
-  }
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-    return (fs::path(xdg) / "arnoldweb" / "cuda").string();
-  if (const char* home = std::getenv("HOME"); home && *home)
-    return (fs::path(home) / ".cache" / "arnoldweb" / "cuda").string();
-  return {};
-}
+std::string cuda_cache_dir() { return kernel_cache_dir("cuda"); }
 
 CachedImage cuda_ensemble_image(const std::string& defines, const CudaTarget& target,
                                 const std::string& device, const std::string& model_source) {
@@ -144,7 +77,7 @@ CachedImage cuda_ensemble_image(const std::string& defines, const CudaTarget& ta
     try {
       file = fs::path(dir) / file_name(key, target);
       std::string payload;
-      if (read_disk(file, payload)) {
+      if (read_cache_file(file.string(), kMagic, payload)) {
         auto img = std::make_shared<CudaImage>();
         img->data = std::move(payload);
         img->target = target;
@@ -159,7 +92,7 @@ CachedImage cuda_ensemble_image(const std::string& defines, const CudaTarget& ta
 
   auto img = std::make_shared<const CudaImage>(nvrtc_compile_ensemble(defines, target, device, model_source));
   mem[key] = img;
-  if (!file.empty()) write_disk(file, img->data);
+  if (!file.empty()) write_cache_file(file.string(), kMagic, img->data);
   return {img, "compiled"};
 }
 

@@ -2,13 +2,12 @@
 // sources (see nvrtc_compiler.hpp).
 #include "backends/cuda/nvrtc_compiler.hpp"
 
-#include <nvrtc.h>
-
 #include <algorithm>
 #include <cstdlib>
 #include <sstream>
 
 #include "arnoldweb/errors.hpp"
+#include "backends/cuda/nvrtc_api.hpp"
 #include "backends/kernel_sources.hpp"
 
 namespace arnoldweb::detail {
@@ -16,7 +15,7 @@ namespace {
 
 [[noreturn]] void throw_nvrtc(const std::string& device, const char* call, nvrtcResult r) {
   throw DeviceError(device, call, static_cast<long>(r),
-                    std::string("NVRTC failed: ") + nvrtcGetErrorString(r));
+                    std::string("NVRTC failed: ") + nvrtc(device).GetErrorString(r));
 }
 
 void nvrtc_check(nvrtcResult r, const std::string& device, const char* call) {
@@ -43,16 +42,18 @@ const HeaderSet& headers() {
 // nvrtcProgram, destroyed on every path.
 struct Program {
   nvrtcProgram p = nullptr;
+  const NvrtcApi& api;
+  explicit Program(const NvrtcApi& a) : api(a) {}
   ~Program() {
-    if (p) nvrtcDestroyProgram(&p);
+    if (p) api.DestroyProgram(&p);
   }
 };
 
-std::string program_log(nvrtcProgram p) {
+std::string program_log(const NvrtcApi& api, nvrtcProgram p) {
   std::size_t n = 0;
-  if (nvrtcGetProgramLogSize(p, &n) != NVRTC_SUCCESS || n == 0) return {};
+  if (api.GetProgramLogSize(p, &n) != NVRTC_SUCCESS || n == 0) return {};
   std::string log(n, '\0');
-  if (nvrtcGetProgramLog(p, log.data()) != NVRTC_SUCCESS) return {};
+  if (api.GetProgramLog(p, log.data()) != NVRTC_SUCCESS) return {};
   while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
   return log;
 }
@@ -70,21 +71,25 @@ std::string CudaTarget::name() const {
 }
 
 std::string nvrtc_version() {
+  const NvrtcApi* api = nvrtc_api();
+  if (!api) return "none";
   int major = 0, minor = 0;
-  if (nvrtcVersion(&major, &minor) != NVRTC_SUCCESS) return "unknown";
+  if (api->Version(&major, &minor) != NVRTC_SUCCESS) return "unknown";
   return std::to_string(major) + "." + std::to_string(minor);
 }
 
 std::vector<int> nvrtc_supported_archs() {
+  const NvrtcApi* api = nvrtc_api();
   int n = 0;
-  if (nvrtcGetNumSupportedArchs(&n) != NVRTC_SUCCESS || n <= 0) return {};
+  if (!api || api->GetNumSupportedArchs(&n) != NVRTC_SUCCESS || n <= 0) return {};
   std::vector<int> archs(static_cast<std::size_t>(n));
-  if (nvrtcGetSupportedArchs(archs.data()) != NVRTC_SUCCESS) return {};
+  if (api->GetSupportedArchs(archs.data()) != NVRTC_SUCCESS) return {};
   std::sort(archs.begin(), archs.end());
   return archs;
 }
 
 CudaTarget nvrtc_target(int cc, const std::string& device) {
+  nvrtc(device);  // a DeviceError saying where NVRTC was looked for, when it is not there
   const std::vector<int> archs = nvrtc_supported_archs();
   CudaTarget t;
   if (std::find(archs.begin(), archs.end(), cc) != archs.end()) {
@@ -159,26 +164,27 @@ CudaImage nvrtc_compile_ensemble(const std::string& defines, const CudaTarget& t
     set = &with_model;
   }
   const HeaderSet& h = *set;
-  Program prog;
-  nvrtc_check(nvrtcCreateProgram(&prog.p, source.c_str(), "ensemble.cu",
+  const NvrtcApi& api = nvrtc(device);
+  Program prog(api);
+  nvrtc_check(api.CreateProgram(&prog.p, source.c_str(), "ensemble.cu",
                                  static_cast<int>(h.names.size()), h.texts.data(), h.names.data()),
               device, "nvrtcCreateProgram");
-  const nvrtcResult r = nvrtcCompileProgram(prog.p, static_cast<int>(argv.size()), argv.data());
-  img.log = program_log(prog.p);
+  const nvrtcResult r = api.CompileProgram(prog.p, static_cast<int>(argv.size()), argv.data());
+  img.log = program_log(api, prog.p);
   if (r != NVRTC_SUCCESS) {
-    std::string log = std::string(nvrtcGetErrorString(r)) + " (NVRTC " + nvrtc_version() + ")\n" +
+    std::string log = std::string(api.GetErrorString(r)) + " (NVRTC " + nvrtc_version() + ")\n" +
                       (img.log.empty() ? "(empty compiler log)" : img.log);
     throw BuildError(device, img.options, log);
   }
   std::size_t n = 0;
   if (target.cubin) {
-    nvrtc_check(nvrtcGetCUBINSize(prog.p, &n), device, "nvrtcGetCUBINSize");
+    nvrtc_check(api.GetCUBINSize(prog.p, &n), device, "nvrtcGetCUBINSize");
     img.data.assign(n, '\0');
-    if (n) nvrtc_check(nvrtcGetCUBIN(prog.p, img.data.data()), device, "nvrtcGetCUBIN");
+    if (n) nvrtc_check(api.GetCUBIN(prog.p, img.data.data()), device, "nvrtcGetCUBIN");
   } else {
-    nvrtc_check(nvrtcGetPTXSize(prog.p, &n), device, "nvrtcGetPTXSize");
+    nvrtc_check(api.GetPTXSize(prog.p, &n), device, "nvrtcGetPTXSize");
     img.data.assign(n, '\0');  // n counts the terminating NUL
-    if (n) nvrtc_check(nvrtcGetPTX(prog.p, img.data.data()), device, "nvrtcGetPTX");
+    if (n) nvrtc_check(api.GetPTX(prog.p, img.data.data()), device, "nvrtcGetPTX");
   }
   if (img.data.empty())
     throw BuildError(device, img.options, "NVRTC reported success but produced an empty image\n" + img.log);

@@ -156,23 +156,16 @@ class OpenclDevice final : public ComputeDevice {
     return s;
   }
 
-  void launch_ensemble(std::uint64_t first, std::uint64_t count, const LaunchShape& s,
-                       const EnsembleBuffers& b) override {
+  void launch_ensemble(const LaunchRange& r, const LaunchShape& s, const EnsembleBuffers& b) override {
     auto arg = [&](DeviceMemory* m) -> const compute::buffer& { return m ? cl(*m) : dummy_; };
     try {
       compute::kernel& k = ensemble_;
-      k.set_arg(0, static_cast<cl_ulong>(first));
-      k.set_arg(1, static_cast<cl_ulong>(first + count));
-      k.set_arg(2, arg(b.reals));
-      k.set_arg(3, arg(b.ints));
-      k.set_arg(4, arg(b.counts));
-      k.set_arg(5, arg(b.counters));
-      k.set_arg(6, arg(b.initial_r));
-      k.set_arg(7, arg(b.final_r));
-      k.set_arg(8, arg(b.final_i));
-      k.set_arg(9, arg(b.indicators));
-      k.set_arg(10, arg(b.group_stats));
-      k.set_arg(11, 2 * wg_ * real_size_, nullptr);
+      k.set_arg(0, static_cast<cl_ulong>(r.first));
+      k.set_arg(1, static_cast<cl_ulong>(r.first + r.count));
+      k.set_arg(2, static_cast<cl_long>(r.seg_first));
+      k.set_arg(3, static_cast<cl_long>(r.seg_end));
+      for (int i = 0; i < AW_BUF_COUNT; ++i) k.set_arg(4 + i, arg(b.at[i]));
+      k.set_arg(4 + AW_BUF_COUNT, 2 * wg_ * real_size_, nullptr);
       queue_.enqueue_1d_range_kernel(k, 0, s.items, wg_);
     } catch (const compute::opencl_error& e) {
       rethrow(info_, "clEnqueueNDRangeKernel", e);

@@ -119,7 +119,7 @@ std::string emit_device_header(const LoweredForm& form, const EmitOptions& optio
   out << " * One statement per operation, in a fixed order; see docs/models.md. */\n"
       << "#ifndef AW_EXPRESSION_MODEL_H\n#define AW_EXPRESSION_MODEL_H\n\n"
       << "#include \"aw_exp.h\"\n#include \"aw_math.h\"\n#include \"aw_state.h\"\n";
-  if (options.kinetic) out << "#include \"models/aw_expression_kinetic.h\"\n";
+  if (options.kinetic) out << "#include \"kinetic/aw_expression_kinetic.h\"\n";
   out << "\n";
 
   const std::vector<int> v{form.value};

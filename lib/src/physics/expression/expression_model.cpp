@@ -87,16 +87,11 @@ std::vector<std::array<int, 3>> wave_vectors(const ExpressionModel& m) {
   return out;
 }
 
-void fill_model_slots(const ExpressionModel& m, const std::array<double, 3>& a, const std::array<double, 3>& b,
-                      double* model, int slots) {
+void fill_parameter_slots(const ExpressionModel& m, double* model, int slots) {
   const int n = static_cast<int>(m.parameter_values.size());
   if (kFirstParameter + n > slots)
     throw ExpressionError(0, std::to_string(n) + " parameters are more than the " +
                                  std::to_string(slots - kFirstParameter) + " an expression model can hold");
-  for (int i = 0; i < 3; ++i) {
-    model[i] = a[static_cast<std::size_t>(i)];
-    model[3 + i] = b[static_cast<std::size_t>(i)];
-  }
   for (int i = 0; i < n; ++i) model[kFirstParameter + i] = m.parameter_values[static_cast<std::size_t>(i)];
 }
 

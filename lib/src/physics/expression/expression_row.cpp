@@ -1,8 +1,8 @@
 // arnoldweb expression models: the model-table row of a scene's potential
-// (models.hpp, expression_row). The row holds the compiled potential: V and
-// its force on the host come from the host evaluator (the bits of a double
+// (model_table.hpp, expression_row). The row holds the compiled potential: V
+// and its force on the host come from the host evaluator (the bits of a double
 // kernel), the kinetic half and the initial states from the device headers
-// compiled for the host, as for the built-ins (models.cpp).
+// compiled for the host, as for the built-ins (host_model.cpp.in).
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -13,14 +13,14 @@
 #include "aw_cpp_std.h"
 #include "physics/expression/expression_model.hpp"
 #include "physics/expression/parser.hpp"
-#include "physics/models.hpp"
+#include "physics/model_table.hpp"
 
 namespace arnoldweb::detail {
 namespace host_expression {
 #include "aw_math.h"
 #include "aw_rng.h"
 #include "aw_state.h"
-#include "models/aw_expression_kinetic.h"
+#include "kinetic/aw_expression_kinetic.h"
 
 // The potential and force of the model being evaluated on this thread (set
 // around each call by the row's functions below; the device code of the
@@ -51,13 +51,6 @@ const host_expression::aw_iparams* core(const IntParams& ip) {
   return reinterpret_cast<const host_expression::aw_iparams*>(&ip);
 }
 
-// A SceneError at `key`, where the scene wrote it (as plan/checks.cpp's fail_at).
-[[noreturn]] void fail(const Scene& s, const std::string& key, const std::string& message) {
-  const SourcePos p = s.pos(key);
-  if (p.set_index > 0) throw SceneError(s.origin(key), 0, 0, key, message);
-  throw SceneError(s.file, p.line, p.column, key, message);
-}
-
 // Largest Frobenius norm of the Hessian of V on a 24^3 grid, with 10% margin
 // (an estimate for the step-size guard, not a bound).
 double sampled_hessian_bound(const expression::ExpressionModel& m) {
@@ -75,39 +68,35 @@ double sampled_hessian_bound(const expression::ExpressionModel& m) {
   return 1.1 * worst;
 }
 
-std::unique_ptr<ModelRow> make_row(const Scene& scene) {
-  if (scene.model_potential.empty())
-    fail(scene, "model.kind",
-         "model.kind = \"expression\" needs model.potential, the potential V(x, y, z) as a string, e.g. "
-         "potential = \"cos(x)*cos(y)*(1 + cos(2*z))\" (docs/models.md)");
+std::unique_ptr<ModelDescriptor> make_row(const ExpressionInput& in) {
+  if (in.potential.empty())
+    throw ModelError("model.kind",
+                     "model.kind = \"expression\" needs model.potential, the potential V(x, y, z) as a string, e.g. "
+                     "potential = \"cos(x)*cos(y)*(1 + cos(2*z))\" (docs/models.md)");
   const int slots = AW_MAX_MODEL_PARAMS - expression::kFirstParameter;
-  if (static_cast<int>(scene.model_parameters.size()) > slots)
-    fail(scene, "model.parameters",
-         std::to_string(scene.model_parameters.size()) + " parameters; an expression model holds at most " +
-             std::to_string(slots));
-  for (const auto& [name, value] : scene.model_parameters) {
+  if (static_cast<int>(in.parameters.size()) > slots)
+    throw ModelError("model.parameters", std::to_string(in.parameters.size()) +
+                                             " parameters; an expression model holds at most " + std::to_string(slots));
+  for (const auto& [name, value] : in.parameters) {
     std::string why;
-    if (!expression::valid_parameter_name(name, &why)) fail(scene, "model.parameters", why);
+    if (!expression::valid_parameter_name(name, &why)) throw ModelError("model.parameters", why);
   }
   auto model = std::make_shared<expression::ExpressionModel>();
   try {
-    *model = expression::make_expression_model(scene.model_potential, scene.model_parameters);
+    *model = expression::make_expression_model(in.potential, in.parameters);
   } catch (const expression::ExpressionError& e) {
-    fail(scene, "model.potential", e.what());
+    throw ModelError("model.potential", e.what());
   }
-  const ModelRow& kind = *find_model("expression");
-  auto r = std::make_unique<ModelRow>(kind);
+  const ModelDescriptor& kind = *find_model("expression");
+  auto r = std::make_unique<ModelDescriptor>(kind);
   r->device_source = model->device_header;
-  r->fill = [model](const Scene& s, RealParams& rp) {
-    expression::fill_model_slots(*model, s.model_kinetic_a, s.model_kinetic_b, rp.model, AW_MAX_MODEL_PARAMS);
-  };
+  r->fill_more = [model](RealParams& rp) { expression::fill_parameter_slots(*model, rp.model, AW_MAX_MODEL_PARAMS); };
   r->potential = [model](double ux, double uy, double uz, const RealParams&) { return model->value(ux, uy, uz); };
   // sampled on a 48^3 grid, widened by 1% of the span (an estimate: the extremes may lie between points)
   std::array<double, 2> range = model->sampled_range();
   const double pad = 0.01 * (range[1] - range[0]);
   range = {range[0] - pad, range[1] + pad};
   r->v_range = [range](const RealParams&) { return range; };
-  r->kinetic = kinetic_in_slots;
   const double hessian = sampled_hessian_bound(*model);
   r->hessian_bound = [hessian](const RealParams&) { return hessian; };
   const auto waves = expression::wave_vectors(*model);
@@ -131,19 +120,19 @@ std::unique_ptr<ModelRow> make_row(const Scene& scene) {
 
 }  // namespace
 
-const ModelRow& expression_row(const Scene& scene) {
+const ModelDescriptor& expression_row(const ExpressionInput& in) {
   // one row per potential and parameters, kept for the process (a handful per run)
   static std::mutex mutex;
-  static std::map<std::string, std::unique_ptr<ModelRow>> rows;
-  std::string key = scene.model_potential;
-  for (const auto& [name, value] : scene.model_parameters) {
+  static std::map<std::string, std::unique_ptr<ModelDescriptor>> rows;
+  std::string key = in.potential;
+  for (const auto& [name, value] : in.parameters) {
     char buf[40];
     std::snprintf(buf, sizeof buf, "%a", value);
     key += '\n' + name + '=' + buf;
   }
   std::lock_guard<std::mutex> lock(mutex);
   auto it = rows.find(key);
-  if (it == rows.end()) it = rows.emplace(key, make_row(scene)).first;
+  if (it == rows.end()) it = rows.emplace(key, make_row(in)).first;
   return *it->second;
 }
 

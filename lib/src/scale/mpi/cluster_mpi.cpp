@@ -102,7 +102,9 @@ class MpiCluster final : public Cluster {
                     std::cref(options), "rank 0");
     JobResult r;
     try {
-      r = detail::coordinate_job(job, transport, options, observer, backend.info(), backend.kernel_description());
+      r = detail::coordinate_job(job, transport, options, observer, backend.info(), [&] {
+        return backend.kernel_description() + "; " + std::to_string(size_) + " devices (MPI ranks)";
+      });
     } catch (...) {
       // the other ranks end with MPI_Abort (the caller's); rank 0's own thread ends here
       detail::Message end;

@@ -1,14 +1,14 @@
 /* arnoldweb models: the kinetic half of the model interface (models/aw_models.h)
  * for the general form T = sum_i a_i p_i^2 / 2 + b_i p_i with a and b in
  * rp->model[0..2] and [3..5] (model.kinetic_a, model.kinetic_b). Used by the
- * fourier model and by expression models (models/aw_expression_kinetic.h); one
+ * fourier model and by expression models (kinetic/aw_expression_kinetic.h); one
  * copy, so both give the same bits for the same a and b.
  */
 #ifndef AW_KINETIC_AB_H
 #define AW_KINETIC_AB_H
 
 #include "aw_state.h"
-#include "models/aw_kinetic.h"
+#include "kinetic/aw_kinetic.h"
 
 AW_FN lreal aw_model_kinetic(lreal px, lreal py, lreal pz, AW_CONSTANT aw_rparams* rp) {
   AW_CONSTANT real* m = rp->model;
@@ -33,7 +33,7 @@ AW_FN void aw_model_kinetic_diag(AW_CONSTANT aw_rparams* rp, real* a) {
 }
 
 /* s > 0 with T(s n) = ke along the unit direction n: A s^2/2 + B s = ke with
- * A = sum a_i n_i^2, B = sum b_i n_i (models/aw_kinetic.h) */
+ * A = sum a_i n_i^2, B = sum b_i n_i (kinetic/aw_kinetic.h) */
 AW_FN lreal aw_model_speed(lreal ke, lreal dx, lreal dy, lreal dz, AW_CONSTANT aw_rparams* rp, lreal* ok) {
   AW_CONSTANT real* m = rp->model;
   lreal A = AW_FMA(AW_LSPLAT(m[2]), dz * dz, AW_FMA(AW_LSPLAT(m[1]), dy * dy, AW_LSPLAT(m[0]) * (dx * dx)));

@@ -3,6 +3,8 @@
 // so host and kernels share one definition of every field; make_plan fills
 // the double block and a float kernel gets it converted element by element
 // (every member of a block has one type, so a block is an array of it).
+// Below the physics and the planner: a model fills its slots of the real
+// block, the planner the rest.
 #pragma once
 
 #include <cstddef>
@@ -10,7 +12,7 @@
 #include <memory>
 #include <vector>
 
-#include "arnoldweb/plan.hpp"
+#include "arnoldweb/precision.hpp"
 #include "aw_params.h"
 
 namespace arnoldweb::detail {
@@ -50,10 +52,5 @@ struct KernelParams {
   std::vector<unsigned char> real_bytes(Precision precision) const;
   std::size_t real_count() const { return sizeof(RealParams) / sizeof(double); }
 };
-
-// The plan's blocks.
-inline const KernelParams& params(const Plan& plan) { return *plan.params; }
-// A copy of the plan's blocks that can be changed (tests' hooks).
-KernelParams& edit_params(Plan& plan);
 
 }  // namespace arnoldweb::detail

@@ -1,4 +1,4 @@
-#include "plan/kernel_params.hpp"
+#include "params/kernel_params.hpp"
 
 #include <cstring>
 
@@ -17,13 +17,6 @@ std::vector<unsigned char> KernelParams::real_bytes(Precision precision) const {
     std::memcpy(out.data(), d, out.size());
   }
   return out;
-}
-
-KernelParams& edit_params(Plan& plan) {
-  auto copy = std::make_shared<KernelParams>(*plan.params);
-  KernelParams& p = *copy;
-  plan.params = std::move(copy);
-  return p;
 }
 
 }  // namespace arnoldweb::detail

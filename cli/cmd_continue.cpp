@@ -1,0 +1,102 @@
+// arnoldweb continue OUTDIR --for DURATION: go on from where a finished run
+// ended. The scene is the run's scene as run (summary.json's scene_toml), its
+// trajectories start from the final states, windings and time of its
+// states.h5 (ensemble.initial = "file"), and they run DURATION more T: a run
+// of 2T is, bit for bit, a run of T continued for T (the final states, and
+// the map of the second window). The outputs go to --out (default
+// OUTDIR-to-<end time>); --set and --device apply on top.
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "arnoldweb/arnoldweb.hpp"
+#include "command.hpp"
+#include "ranks.hpp"
+
+namespace arnoldweb::cli {
+namespace {
+
+struct ContinueFlags {
+  std::string from;
+  double duration = 0;
+  SceneArgs scene;  // --out, --device, --set (the scene itself comes from the run)
+  bool force = false;
+  bool quiet = false;
+};
+
+std::string number(double v) {
+  std::ostringstream s;
+  s.precision(15);
+  s << v;
+  return s.str();
+}
+
+// summary.json of a finished run: its scene as run and when it ended.
+struct FinishedRun {
+  std::string scene_toml, summary;
+  double end_time = 0;  // in T
+};
+
+// Read as render and compare read it (saved_run.hpp): a plain file of the form
+// arnoldweb writes; SavedRunError (exit 2) naming it otherwise.
+FinishedRun read_finished(const std::string& dir) {
+  FinishedRun f;
+  f.summary = dir + "/summary.json";
+  const nlohmann::json j = nlohmann::json::parse(read_saved_summary(dir));
+  f.scene_toml = j["scene_toml"].get<std::string>();
+  const auto time = j.find("time");
+  if (time != j.end() && time->is_object() && time->contains("end") && (*time)["end"].is_number())
+    f.end_time = (*time)["end"].get<double>();
+  return f;
+}
+
+int continue_run(ContinueFlags& f) {
+  refuse_mpirun_without_mpi();
+  if (cluster() && cluster()->rank() != 0) return serve_rank(f.scene.device);
+  std::string from = f.from;
+  while (from.size() > 1 && from.back() == '/') from.pop_back();
+  const FinishedRun run = read_finished(from);
+  const std::string states = from + "/states.h5";
+  if (!std::ifstream(states))
+    throw SavedRunError(states, "the run kept no final states to continue from: run it with "
+                                "observe.final_states = true");
+  read_saved_file(from, "states.h5");  // checked against its size and digest in summary.json
+  if (!(f.duration > 0))
+    throw SceneError("--for", 0, 0, "run.duration", "--for must be a duration in T greater than 0");
+  // the run's scene as run, then what continuing changes, then the user's --set
+  std::vector<std::string> sets = {"ensemble.initial=\"file\"", "ensemble.file=" + states,
+                                   "run.duration=" + number(f.duration)};
+  std::vector<std::string> labels = {"continue " + from, "continue " + from, "--for " + number(f.duration)};
+  if (!f.scene.out) f.scene.out = from + "-to-" + number(run.end_time + f.duration);
+  sets.insert(sets.end(), f.scene.sets.begin(), f.scene.sets.end());
+  labels.resize(sets.size());
+  sets.push_back("output.dir=" + *f.scene.out);
+  labels.push_back("--out " + *f.scene.out);
+  if (f.scene.device) {
+    sets.push_back("run.device=" + *f.scene.device);
+    labels.push_back("--device " + *f.scene.device);
+  }
+  const Scene scene = parse_scene(run.scene_toml, run.summary, sets, labels);
+  const PreparedJob prepared = prepare_scene_job(scene, run.summary, f.force);
+  return execute_job(prepared, f.quiet, std::nullopt, f.scene.device);
+}
+
+}  // namespace
+
+void add_continue_command(CLI::App& app, Action& action) {
+  auto flags = std::make_shared<ContinueFlags>();
+  auto* c = app.add_subcommand("continue", "Go on from where a finished run ended: its final states, windings and "
+                                           "time, for DURATION more (bit for bit as one longer run)");
+  c->add_option("outdir", flags->from, "The output directory of the finished run (with states.h5)")->required();
+  c->add_option("--for", flags->duration, "How much longer, in T (a multiple of run.average)")->required();
+  c->add_option("--out,-o", flags->scene.out, "Output directory (default: OUTDIR-to-<end time>)");
+  c->add_option("--device,-d", flags->scene.device,
+                "Device: cpu, opencl:N, cuda:N, auto, all (every GPU) or a list cuda:0,cuda:1 (default: the run's)");
+  c->add_option("--set,-s", flags->scene.sets, "Override a key of the run's scene: --set key=value");
+  c->add_flag("--force,-f", flags->force, "Replace an existing output directory that arnoldweb wrote");
+  c->add_flag("--quiet,-q", flags->quiet, "Print nothing but errors");
+  c->callback([&action, flags] { action = [flags] { return continue_run(*flags); }; });
+}
+
+}  // namespace arnoldweb::cli

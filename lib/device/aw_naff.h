@@ -1,0 +1,345 @@
+/* arnoldweb portable device core: frequency analysis (NAFF, Laskar 1990,
+ * 1993, 2003), the leading frequency of a complex signal sampled at equal
+ * steps, refined to the maximum of the windowed Fourier transform
+ * (docs/frequencies.md).
+ *
+ * The signal: n samples z_k = re[k stride] + i im[k stride], k = 0..n-1, of
+ * one trajectory, in an AW_GLOBAL buffer. The stride lets the caller keep a
+ * chunk's samples coalesced: sample k of trajectory j at base + k * stride + j
+ * (stride = the trajectories of the chunk times the reals per sample).
+ * Frequencies are in cycles per sample, in [-1/2, 1/2); a signal sampled
+ * every dt T has nu = sigma / dt cycles (turns) per T, which for an angle in
+ * turns is its rate of rotation (for fgl: nu_j = I_j at epsilon = 0).
+ *
+ * With m_k = k - (n - 1)/2 (the time from the window's centre, in samples),
+ * the window chi_p(k) = (1 + cos(2 pi m_k / (n - 1)))^p (Laskar's chi_p up to
+ * a constant factor: p = 0 none, p = 1 Hanning; zero at both ends) and
+ *   S_j(sigma) = sum_k m_k^j chi_p(k) z_k exp(-2 pi i sigma m_k),  j = 0, 1, 2,
+ * the windowed transform phi(sigma) = S_0 / sum chi_p. Its modulus is largest
+ * where F'(sigma) = 4 pi Im(conj(S_0) S_1) vanishes, with
+ * F''(sigma) = 8 pi^2 (|S_1|^2 - Re(conj(S_0) S_2)): one pass over the samples
+ * gives a Newton step, safeguarded by a bracket of the maximum. The error of
+ * the frequency from the other terms of a quasi-periodic signal falls like
+ * 1/T^(2p+2) with the length T of the window (Laskar 2003): 1/T^4 for the
+ * Hanning window; the round-off of one pass is ~eps sqrt(n) / n cycles per
+ * sample.
+ *
+ * Portable and bitwise reproducible: scalar `real` per trajectory (callers
+ * with AW_LANES > 1 loop over their lanes), only + - * / and explicit fma,
+ * and the portable sin/cos (aw_sincos2pi_1); sums in a fixed order; no
+ * recursion and no allocation: the coarse search by FFT works in a buffer of
+ * the caller's. exp(-2 pi i sigma m_k) and the window are complex rotations
+ * from one sample to the next, recomputed exactly every AW_NAFF_ANCHOR
+ * samples, so their rounding errors stay bounded.
+ *
+ * The calls, for one signal:
+ *   coarse:  aw_naff_fft_peak (a radix-2 FFT of the windowed samples in a
+ *            work buffer of 2 m reals, m = 2^log2m >= n; the largest bin,
+ *            interpolated) or aw_naff_scan (no buffer: |phi|^2 on a grid of
+ *            frequencies near a guess, e.g. the mean rate of an angle from its
+ *            winding counts), then
+ *   refine:  aw_naff_refine (bracket, then safeguarded Newton to round-off),
+ *   further: aw_naff_subtract removes the term found (the next call finds
+ *            the next largest).
+ */
+#ifndef AW_NAFF_H
+#define AW_NAFF_H
+
+#include "aw_math.h"
+
+#define AW_NAFF_ANCHOR 32   /* rotations recomputed exactly every this many samples */
+#define AW_NAFF_MAX_ITER 40 /* Newton/bisection passes of aw_naff_refine at most */
+#define AW_NAFF_TWO_PI AW_R(6.283185307179586)
+
+/* One pass's sums at a frequency: S_0, S_1, S_2 (real and imaginary parts)
+ * and the sum of the window's weights. */
+typedef struct {
+  real s0r, s0i, s1r, s1i, s2r, s2i;
+  real wsum;
+} aw_naff_sums;
+
+/* The result of aw_naff_refine. */
+typedef struct {
+  real freq;           /* cycles per sample */
+  real amp_re, amp_im; /* complex amplitude phi = S_0 / sum chi_p at freq (phase at the window's centre) */
+  int passes;          /* passes over the samples */
+  int ok;              /* 1: a maximum was bracketed and refined; 0: none near the start (freq = the start) */
+} aw_naff_result;
+
+/* A rotation exp(2 pi i u_k), u_k = a m_k: (c, s) advanced by (dc, ds) =
+ * exp(2 pi i a) from one sample to the next, recomputed from a m_k at every
+ * anchor. */
+typedef struct {
+  real c, s, dc, ds, a;
+} aw_naff_rotor;
+
+AW_FN void aw_naff_rotor_begin(aw_naff_rotor* r, real a) {
+  r->a = a;
+  aw_sincos2pi_1(a, &r->ds, &r->dc);
+  r->c = AW_R(1.0);
+  r->s = AW_R(0.0);
+}
+
+/* The rotation at sample k, m = m_k: exact at the anchors, one complex
+ * product from the previous sample between them. */
+AW_FN void aw_naff_rotor_at(aw_naff_rotor* r, int k, real m) {
+  if (k % AW_NAFF_ANCHOR == 0) {
+    aw_sincos2pi_1(r->a * m, &r->s, &r->c);
+  } else {
+    const real c = AW_FMA(r->c, r->dc, -(r->s * r->ds));
+    const real s = AW_FMA(r->s, r->dc, r->c * r->ds);
+    r->c = c;
+    r->s = s;
+  }
+}
+
+/* chi_p from cos(2 pi m_k / (n - 1)): (1 + cos)^p. */
+AW_FN real aw_naff_window(real cosine, int p) {
+  const real b = AW_R(1.0) + cosine;
+  real w = AW_R(1.0);
+  for (int i = 0; i < p; ++i) w = w * b;
+  return w;
+}
+
+/* One pass: the sums at sigma. n >= 3. */
+AW_FN void aw_naff_sums_at(AW_GLOBAL const real* re, AW_GLOBAL const real* im, aw_u64 stride, int n, int p,
+                           real sigma, aw_naff_sums* out) {
+  const real centre = AW_R(0.5) * (real)(n - 1);
+  aw_naff_rotor e, win;
+  aw_naff_rotor_begin(&e, -sigma);
+  aw_naff_rotor_begin(&win, AW_R(1.0) / (real)(n - 1));
+  real s0r = AW_R(0.0), s0i = AW_R(0.0), s1r = AW_R(0.0), s1i = AW_R(0.0), s2r = AW_R(0.0), s2i = AW_R(0.0);
+  real wsum = AW_R(0.0);
+  for (int k = 0; k < n; ++k) {
+    const real m = (real)k - centre; /* exact: a half-integer or an integer */
+    aw_naff_rotor_at(&e, k, m);
+    aw_naff_rotor_at(&win, k, m);
+    const real w = aw_naff_window(win.c, p);
+    const real zr = re[(aw_u64)k * stride], zi = im[(aw_u64)k * stride];
+    /* a = w z exp(-2 pi i sigma m) */
+    const real ar = w * AW_FMA(zr, e.c, -(zi * e.s));
+    const real ai = w * AW_FMA(zr, e.s, zi * e.c);
+    s0r = s0r + ar;
+    s0i = s0i + ai;
+    s1r = AW_FMA(m, ar, s1r);
+    s1i = AW_FMA(m, ai, s1i);
+    const real mm = m * m; /* exact while |m| < 2^26 (double), 2^12 (float: n < 8192) */
+    s2r = AW_FMA(mm, ar, s2r);
+    s2i = AW_FMA(mm, ai, s2i);
+    wsum = wsum + w;
+  }
+  out->s0r = s0r;
+  out->s0i = s0i;
+  out->s1r = s1r;
+  out->s1i = s1i;
+  out->s2r = s2r;
+  out->s2i = s2i;
+  out->wsum = wsum;
+}
+
+/* Im(conj(S_0) S_1): the sign of d|phi|^2 / dsigma. */
+AW_FN real aw_naff_slope(const aw_naff_sums* s) { return AW_FMA(s->s0r, s->s1i, -(s->s0i * s->s1r)); }
+
+/* |S_1|^2 - Re(conj(S_0) S_2): negative near a maximum of |phi|. */
+AW_FN real aw_naff_curvature(const aw_naff_sums* s) {
+  const real a = AW_FMA(s->s1r, s->s1r, s->s1i * s->s1i);
+  const real b = AW_FMA(s->s0r, s->s2r, s->s0i * s->s2i);
+  return a - b;
+}
+
+/* |phi(sigma)|^2 = |S_0|^2 / (sum chi_p)^2. */
+AW_FN real aw_naff_power(const aw_naff_sums* s) {
+  const real r = s->s0r / s->wsum, i = s->s0i / s->wsum;
+  return AW_FMA(r, r, i * i);
+}
+
+/* The frequency of the largest |phi|^2 among sigma_lo + j (sigma_hi -
+ * sigma_lo) / (points - 1), j = 0..points-1 (the first of equal ones): a
+ * coarse search without a work buffer, points passes. */
+AW_FN real aw_naff_scan(AW_GLOBAL const real* re, AW_GLOBAL const real* im, aw_u64 stride, int n, int p,
+                        real sigma_lo, real sigma_hi, int points) {
+  real best = sigma_lo, best_power = AW_R(-1.0);
+  const real step = (points > 1) ? (sigma_hi - sigma_lo) / (real)(points - 1) : AW_R(0.0);
+  for (int j = 0; j < points; ++j) {
+    const real sigma = AW_FMA((real)j, step, sigma_lo);
+    aw_naff_sums s;
+    aw_naff_sums_at(re, im, stride, n, p, sigma, &s);
+    const real power = aw_naff_power(&s);
+    if (power > best_power) {
+      best_power = power;
+      best = sigma;
+    }
+  }
+  return best;
+}
+
+/* Bit reversal of j (bits low bits). */
+AW_FN aw_u32 aw_naff_reverse(aw_u32 j, int bits) {
+  aw_u32 r = 0;
+  for (int b = 0; b < bits; ++b) {
+    r = (r << 1) | (j & 1u);
+    j >>= 1;
+  }
+  return r;
+}
+
+/* A coarse frequency: the windowed samples, zero-padded to m = 2^log2m >= n,
+ * through an in-place radix-2 FFT in the work buffer (wre[j wstride], wim[j
+ * wstride], j < m: 2 m reals the caller provides, overwritten); the bin of
+ * the largest modulus (the first of equal ones), moved by the vertex of the
+ * parabola through it and its two neighbours. Cycles per sample, in
+ * [-1/2, 1/2). Cost: m sin/cos and (m/2) log2 m butterflies. */
+AW_FN real aw_naff_fft_peak(AW_GLOBAL const real* re, AW_GLOBAL const real* im, aw_u64 stride, int n, int p,
+                            AW_GLOBAL real* wre, AW_GLOBAL real* wim, aw_u64 wstride, int log2m) {
+  const aw_u32 m = 1u << log2m;
+  const real centre = AW_R(0.5) * (real)(n - 1);
+  aw_naff_rotor win;
+  aw_naff_rotor_begin(&win, AW_R(1.0) / (real)(n - 1));
+  /* windowed samples in bit-reversed order; the padding zero */
+  for (aw_u32 j = 0; j < m; ++j) {
+    real xr = AW_R(0.0), xi = AW_R(0.0);
+    if ((int)j < n) {
+      aw_naff_rotor_at(&win, (int)j, (real)(int)j - centre);
+      const real w = aw_naff_window(win.c, p);
+      xr = w * re[(aw_u64)j * stride];
+      xi = w * im[(aw_u64)j * stride];
+    }
+    const aw_u64 r = (aw_u64)aw_naff_reverse(j, log2m) * wstride;
+    wre[r] = xr;
+    wim[r] = xi;
+  }
+  /* butterflies: X = sum_k x_k exp(-2 pi i j k / m) */
+  for (aw_u32 len = 2; len <= m; len <<= 1) {
+    const aw_u32 span = len >> 1;
+    const real inv_len = AW_R(1.0) / (real)len; /* a power of two: exact */
+    for (aw_u32 j = 0; j < span; ++j) {
+      real ts, tc;
+      aw_sincos2pi_1(-((real)j * inv_len), &ts, &tc);
+      for (aw_u32 b = j; b < m; b += len) {
+        const aw_u64 ia = (aw_u64)b * wstride, ib = (aw_u64)(b + span) * wstride;
+        const real br = AW_FMA(wre[ib], tc, -(wim[ib] * ts));
+        const real bi = AW_FMA(wre[ib], ts, wim[ib] * tc);
+        const real ar = wre[ia], ai = wim[ia];
+        wre[ia] = ar + br;
+        wim[ia] = ai + bi;
+        wre[ib] = ar - br;
+        wim[ib] = ai - bi;
+      }
+    }
+  }
+  /* the largest bin */
+  aw_u32 jmax = 0;
+  real pmax = AW_R(-1.0);
+  for (aw_u32 j = 0; j < m; ++j) {
+    const aw_u64 i = (aw_u64)j * wstride;
+    const real power = AW_FMA(wre[i], wre[i], wim[i] * wim[i]);
+    if (power > pmax) {
+      pmax = power;
+      jmax = j;
+    }
+  }
+  const aw_u64 il = (aw_u64)((jmax + m - 1u) & (m - 1u)) * wstride, ir = (aw_u64)((jmax + 1u) & (m - 1u)) * wstride;
+  const real al = AW_SQRT(AW_FMA(wre[il], wre[il], wim[il] * wim[il]));
+  const real ar = AW_SQRT(AW_FMA(wre[ir], wre[ir], wim[ir] * wim[ir]));
+  const real a0 = AW_SQRT(pmax);
+  const real den = (al + ar) - AW_R(2.0) * a0;
+  const real shift = (den < AW_R(0.0)) ? (AW_R(0.5) * (al - ar)) / den : AW_R(0.0); /* in (-1/2, 1/2) at a peak */
+  real sigma = ((real)jmax + shift) / (real)m;
+  if (sigma >= AW_R(0.5)) sigma = sigma - AW_R(1.0);
+  return sigma;
+}
+
+/* The frequency of the maximum of |phi| nearest to sigma0 (within the main
+ * lobe of the window, about p + 1 bins of 1/n), to round-off. Each pass gives
+ * the slope g and the curvature c of |phi|^2 at x: where c < 0 (near the
+ * maximum) the Newton step -g / (2 pi c) if it is below half a bin, else half
+ * a bin uphill; once the maximum is bracketed (slopes of both signs seen), a
+ * Newton step that leaves the bracket is replaced by its midpoint. It stops
+ * when a step (or the bracket) is below eps (|x| + 1/(2n)), or when two
+ * Newton steps in a row stop shrinking (the round-off floor of g: the last x
+ * is kept).
+ * ok = 0 (and freq = sigma0) where no maximum was found within
+ * AW_NAFF_MAX_ITER passes, or the samples are not finite. n >= 3, p >= 0. */
+AW_FN void aw_naff_refine(AW_GLOBAL const real* re, AW_GLOBAL const real* im, aw_u64 stride, int n, int p,
+                          real sigma0, aw_naff_result* out) {
+#ifdef AW_FLOAT
+  const real eps = AW_R(1.1920928955078125e-07);
+#else
+  const real eps = AW_R(2.220446049250313e-16);
+#endif
+  const real half_bin = AW_R(0.5) / (real)n;
+  aw_naff_sums s;
+  real x = sigma0;
+  aw_naff_sums_at(re, im, stride, n, p, x, &s);
+  int passes = 1, done = 0, newton_before = 0;
+  real lo = AW_R(0.0), hi = AW_R(0.0), last_newton = AW_R(0.0);
+  int have_lo = 0, have_hi = 0;
+  for (int it = 0; it < AW_NAFF_MAX_ITER && !done; ++it) {
+    const real g = aw_naff_slope(&s), c = aw_naff_curvature(&s);
+    if (!(g == g && c == c)) break; /* not finite */
+    if (g == AW_R(0.0) && c < AW_R(0.0)) {
+      done = 1;
+      break;
+    }
+    if (g > AW_R(0.0)) {
+      lo = x;
+      have_lo = 1;
+    } else {
+      hi = x;
+      have_hi = 1;
+    }
+    real step = (c < AW_R(0.0)) ? -g / (AW_NAFF_TWO_PI * c) : AW_R(0.0);
+    int newton = c < AW_R(0.0) && AW_FABS(step) <= half_bin;
+    if (!newton) step = (g > AW_R(0.0)) ? half_bin : -half_bin; /* uphill */
+    if (newton && AW_FABS(step) <= eps * (AW_FABS(x) + half_bin)) {
+      x = x + step;
+      done = 1;
+      break;
+    }
+    real next = x + step;
+    if (have_lo && have_hi && !(next > lo && next < hi)) {
+      next = AW_R(0.5) * (lo + hi);
+      newton = 0;
+    }
+    const real size = AW_FABS(next - x);
+    if (size <= eps * (AW_FABS(x) + half_bin)) { /* a bracket as narrow as round-off */
+      x = next;
+      done = 1;
+      break;
+    }
+    if (newton && newton_before && size > AW_R(0.5) * last_newton) {
+      done = 1; /* the round-off floor: keep x */
+      break;
+    }
+    newton_before = newton;
+    if (newton) last_newton = size;
+    x = next;
+    aw_naff_sums_at(re, im, stride, n, p, x, &s);
+    passes += 1;
+  }
+  out->ok = done;
+  out->freq = done ? x : sigma0;
+  out->amp_re = s.s0r / s.wsum;
+  out->amp_im = s.s0i / s.wsum;
+  out->passes = passes;
+}
+
+/* z_k -= a exp(2 pi i sigma m_k): the term (sigma, a) of aw_naff_refine
+ * removed from the samples in place, so that the next refinement finds the
+ * next largest term (Laskar's NAFF subtracts the found terms in turn; for
+ * frequencies separated by many bins their exponentials are orthogonal over
+ * the window to O(1/(T dnu)^(2p+1)), which this neglects). */
+AW_FN void aw_naff_subtract(AW_GLOBAL real* re, AW_GLOBAL real* im, aw_u64 stride, int n, real sigma, real amp_re,
+                            real amp_im) {
+  const real centre = AW_R(0.5) * (real)(n - 1);
+  aw_naff_rotor e;
+  aw_naff_rotor_begin(&e, sigma);
+  for (int k = 0; k < n; ++k) {
+    aw_naff_rotor_at(&e, k, (real)k - centre);
+    const aw_u64 i = (aw_u64)k * stride;
+    re[i] = re[i] - AW_FMA(amp_re, e.c, -(amp_im * e.s));
+    im[i] = im[i] - AW_FMA(amp_re, e.s, amp_im * e.c);
+  }
+}
+
+#endif /* AW_NAFF_H */

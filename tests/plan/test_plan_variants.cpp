@@ -1,0 +1,101 @@
+// The planner's variants of a plan (plan.hpp): with_step and with_trajectories
+// give exactly the plan that planning the scene with that step or that number
+// of trajectories gives (the accuracy pilot relies on it), and the output
+// table's record layout follows the effects asked for.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "aw_params.h"
+#include "plan/output_table.hpp"
+#include "plan/plan_params.hpp"
+#include "support.hpp"
+
+using namespace arnoldweb;
+
+namespace {
+
+void check_same_plan(const Plan& a, const Plan& b) {
+  CHECK(a.step == b.step);
+  CHECK(a.steps_per_segment == b.steps_per_segment);
+  CHECK(a.segments_per_window == b.segments_per_window);
+  CHECK(a.windows == b.windows);
+  CHECK(a.steps_per_trajectory == b.steps_per_trajectory);
+  CHECK(a.trajectory_steps == b.trajectory_steps);
+  CHECK(a.force_evaluations == b.force_evaluations);
+  CHECK(a.guard.value == b.guard.value);
+  CHECK(a.guard.safe_step == b.guard.safe_step);
+  CHECK(a.guard.quantity == b.guard.quantity);
+  CHECK(a.warnings == b.warnings);
+  CHECK(a.kernel == b.kernel);
+  const std::string ta = a.scene.to_toml(), tb = b.scene.to_toml();  // the values, not the provenance comments
+  CHECK(ta.substr(ta.find("[model]")) == tb.substr(tb.find("[model]")));
+  const detail::KernelParams &pa = detail::params(a), &pb = detail::params(b);
+  CHECK(std::memcmp(&pa.reals, &pb.reals, sizeof pa.reals) == 0);
+  CHECK(std::memcmp(&pa.ints, &pb.ints, sizeof pa.ints) == 0);
+}
+
+}  // namespace
+
+TEST_SUITE("plan") {
+  TEST_CASE("with_step and with_trajectories give the plans of the scene planned with that step or number") {
+    for (const char* model : {"seibert2011", "fgl", "fourier"}) {
+      CAPTURE(model);
+      const std::vector<std::string> sets = {awtest::set("model.kind", model), "model.energy=1.5",
+                                             "integrator.method=\"pefrl\"", "integrator.allow_unsafe_step=true",
+                                             "run.average=2", "run.duration=4", "observe.energy_error.every=1",
+                                             "observe.final_states=true", "observe.fli=true"};
+      const Plan base = make_plan(awtest::scene_from("", sets));
+      for (double step : {0.05, 0.01, 1.0 / 128}) {
+        std::vector<std::string> at = sets;
+        at.push_back(awtest::set("integrator.step", step));
+        check_same_plan(with_step(base, step), make_plan(awtest::scene_from("", at)));
+      }
+      std::vector<std::string> more = sets;
+      more.push_back("ensemble.trajectories=12345");
+      check_same_plan(with_trajectories(base, 12345), make_plan(awtest::scene_from("", more)));
+    }
+  }
+
+  TEST_CASE("with_step refuses a step that does not divide the schedule, naming the key") {
+    const Plan base = make_plan(awtest::scene_from("", {"run.average=1", "run.duration=1"}));
+    CHECK_THROWS_AS(with_step(base, 0.3), SceneError);
+  }
+
+  TEST_CASE("the records: the output table's rows the effects ask for, laid out one after the other") {
+    const Plan plain = make_plan(awtest::scene_from(""));
+    CHECK(detail::params(plain).ints.rec_reals == 0);
+    CHECK(detail::params(plain).ints.rec_ints == 0);
+    const Plan all = make_plan(awtest::scene_from(
+        "", {"observe.initial_states=true", "observe.final_states=true", "observe.fli=true"}));
+    const detail::IntParams& ip = detail::params(all).ints;
+    std::int64_t reals = 0, ints = 0;
+    for (const detail::RecordOutput& row : detail::record_outputs()) {
+      CAPTURE(row.name);
+      CHECK((row.internal() || !row.datasets.empty()));
+      if (!(all.kernel.features & row.feature)) continue;
+      CHECK(ip.rec_col_r[row.slot] == reals);
+      CHECK(ip.rec_col_i[row.slot] == ints);
+      reals += row.reals;
+      ints += row.ints;
+      for (const detail::RecordDataset& d : row.datasets)  // every dataset within its row's columns
+        CHECK(d.first + d.count <= (d.integers ? row.ints : row.reals));
+    }
+    CHECK(ip.rec_reals == reals);
+    CHECK(ip.rec_ints == ints);
+    CHECK(reals > 0);
+    // every name is an output of the table, and the table's slots are distinct
+    std::vector<int> slots;
+    for (const detail::RecordOutput& row : detail::record_outputs()) {
+      CHECK(std::find(slots.begin(), slots.end(), row.slot) == slots.end());
+      CHECK(row.slot < AW_OUT_SLOTS);
+      slots.push_back(row.slot);
+    }
+    std::size_t reported = 0;
+    for (const detail::RecordOutput& row : detail::record_outputs()) reported += row.internal() ? 0 : 1;
+    CHECK(output_names().size() == reported);
+  }
+}

@@ -1,0 +1,104 @@
+"""Persistence (issue 28): Scene and Result pickle and deep-copy; arnoldweb.load gives back the
+Result of a run's output directory, checked against its digests."""
+import copy
+import json
+import pickle
+
+import numpy as np
+import pytest
+
+import arnoldweb as aw
+from conftest import small_dict
+
+
+def assert_same_arrays(a, b):
+    """Equal bit for bit: same dtype, shape and bytes (NaNs included)."""
+    assert type(a) is type(b)
+    if isinstance(a, dict):
+        assert a.keys() == b.keys()
+        for k in a:
+            assert_same_arrays(a[k], b[k])
+    elif isinstance(a, np.ndarray):
+        assert a.dtype == b.dtype and a.shape == b.shape
+        assert a.tobytes() == b.tobytes()
+    else:
+        assert a == b
+
+
+@pytest.fixture
+def full_result():
+    """A run with every kind of array: map, zoom, frames, states, indicators, and a panel."""
+    d = small_dict(observe={"initial_states": True, "final_states": True, "fli": True,
+                            "zoom": {"center": [45.0, 0.0], "width": 60.0, "resolution": 16},
+                            "frames": {"times": [0.0, 5.0]}})
+    d["panel"] = [{"name": "hot", "title": "E = 16", "set": ["model.energy=16", "ensemble.trajectories=500"]}]
+    return aw.run(aw.Scene.from_dict(d))
+
+
+FIELDS = ("map", "frames", "zoom", "states", "indicators", "counters", "digests", "device", "nside", "name")
+
+
+def test_scene_pickles_and_deep_copies(small_scene):
+    small_scene.set("model.energy", 20.0)
+    for other in (pickle.loads(pickle.dumps(small_scene)), copy.deepcopy(small_scene), copy.copy(small_scene)):
+        assert other == small_scene and other is not small_scene
+        assert other.overrides == small_scene.overrides and other.file == small_scene.file
+        other.set("model.energy", 30.0)
+        assert small_scene["model.energy"] == 20.0
+
+
+def test_result_pickles_bit_for_bit(full_result):
+    r = full_result
+    back = pickle.loads(pickle.dumps(r))
+    for name in FIELDS:
+        assert_same_arrays(getattr(back, name), getattr(r, name))
+    assert back.summary == r.summary and back.energy.keys() == r.energy.keys()
+    assert back.binned == r.binned and back.interrupted is False
+    assert not back.map.flags.writeable
+    assert list(back.panels) == ["hot"]
+    assert_same_arrays(back.panels["hot"].map, r.panels["hot"].map)
+    assert back.panels["hot"].title == "E = 16"
+    assert repr(back) == repr(r)
+
+
+def test_result_deep_copy_is_independent(full_result):
+    r = full_result
+    c = copy.deepcopy(r)
+    for name in FIELDS:
+        assert_same_arrays(getattr(c, name), getattr(r, name))
+    assert not np.shares_memory(c.map, r.map)
+    with pytest.raises(aw.OutputError, match="loaded, unpickled or copied"):
+        c.write("/tmp/never-written")
+
+
+def test_load_gives_the_saved_run(full_result, tmp_path):
+    r = full_result
+    out = tmp_path / "run"
+    r.write(out)
+    back = aw.load(out)
+    for name in ("map", "frames", "zoom", "nside", "counters", "device"):
+        assert_same_arrays(getattr(back, name), getattr(r, name))
+    assert back.digests["map"] == r.digests["map"] and back.digests["final_states"] == r.digests["final_states"]
+    for group in ("initial", "final"):
+        for k, v in r.states[group].items():
+            np.testing.assert_array_equal(back.states[group][k], v)
+    assert back.indicators.dtype.names == aw.INDICATOR_NAMES
+    np.testing.assert_array_equal(back.indicators["fli"], r.indicators["fli"])
+    assert back.summary == json.loads((out / "summary.json").read_text())
+    assert back.energy["max"] == r.energy["max"]
+    assert back.panels["hot"].binned == r.panels["hot"].binned
+    assert_same_arrays(back.panels["hot"].map, r.panels["hot"].map)
+    assert_same_arrays(pickle.loads(pickle.dumps(back)).map, r.map)
+
+
+def test_load_checks_the_digest_and_names_bad_files(small_scene, tmp_path):
+    out = tmp_path / "run"
+    aw.run(small_scene, out=out)
+    summary = json.loads((out / "summary.json").read_text())
+    summary["digests"]["map"] = "0" * 32
+    (out / "summary.json").write_text(json.dumps(summary))
+    with pytest.raises(aw.OutputError, match="map.h5") as e:
+        aw.load(out)
+    assert e.value.path.endswith("map.h5")
+    with pytest.raises(aw.OutputError, match="summary.json"):
+        aw.load(tmp_path / "nothing-here")
