@@ -70,3 +70,34 @@ def test_summary_is_read_back_checked(small_scene, tmp_path):
     t.join(10)
     assert done, "reading a FIFO as summary.json blocked"
     assert "pipe (FIFO)" in str(done[0].value)
+
+
+def test_load_checks_every_file_it_reads(tmp_path):
+    from conftest import small_dict
+    d = small_dict(observe={"final_states": True, "fli": True})
+    d["panel"] = [{"name": "hot", "set": ["model.energy=16"]}]
+    out = tmp_path / "run"
+    aw.run(aw.Scene.from_dict(d), out=out)
+    assert aw.load(out).states["final"]  # intact: read
+    # a flipped byte in states.h5 (read with h5py before, unchecked)
+    with open(out / "states.h5", "r+b") as f:
+        f.seek(os.path.getsize(out / "states.h5") // 2)
+        byte = f.read(1)
+        f.seek(-1, os.SEEK_CUR)
+        f.write(bytes([byte[0] ^ 0xFF]))
+    with pytest.raises(aw.OutputError, match="states.h5: its XXH3-128 digest is"):
+        aw.load(out).states
+    # a panel's summary.json changed after the run: its digest is in the main summary.json
+    panel = out / "panel-hot" / "summary.json"
+    panel.write_text(panel.read_text().replace('"interrupted": false', '"interrupted": true'))
+    with pytest.raises(aw.OutputError, match="panel-hot/summary.json"):
+        aw.load(out)
+    # a FIFO as summary.json: refused at once (open() blocked for ever)
+    os.remove(out / "summary.json")
+    os.mkfifo(out / "summary.json")
+    done = []
+    t = threading.Thread(target=lambda: done.append(pytest.raises(aw.OutputError, aw.load, out)), daemon=True)
+    t.start()
+    t.join(10)
+    assert done, "aw.load blocked on a FIFO as summary.json"
+    assert "pipe (FIFO)" in str(done[0].value)

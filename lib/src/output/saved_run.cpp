@@ -127,7 +127,7 @@ namespace detail {
 
 SavedDir::SavedDir(const std::string& dir) : dir_(dir) {
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw SavedRunError(dir, "no such directory (an output directory of arnoldweb run)");
+  if (!fs::is_directory(dir, ec)) throw SavedRunError(dir, "no such directory (an output directory of arnoldweb run, with its summary.json)");
   const RegularFile f = read_regular_file(summary_path(), kMaxSummaryBytes);
   if (!f.why.empty())
     throw SavedRunError(summary_path(), "cannot read it: " + f.why +
