@@ -1,9 +1,11 @@
 // arnoldweb compare DIR_A DIR_B: are two saved velocity maps (or zooms)
 // statistically the same? The two-sample chi-square test of compare_maps
 // (analysis.hpp). Exit codes as diff and cmp have them: 0 consistent,
-// 1 different, 2 trouble (a missing directory or map, different shapes).
+// 1 different, 2 trouble (a missing or damaged directory or map, different
+// shapes, a bad option; the read-side checks of saved_run.hpp).
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 
 #include "arnoldweb/analysis.hpp"
@@ -39,6 +41,8 @@ const std::vector<std::uint64_t>& pick(const SavedMaps& s, const std::string& wh
 
 int compare(const CompareArgs& args) {
   const SavedMaps a = read_saved_maps(args.dir_a), b = read_saved_maps(args.dir_b);
+  for (const SavedMaps* s : {&a, &b})
+    if (!s->note.empty()) std::cerr << "arnoldweb: note: " << s->note << "\n";
   std::string shape_a, shape_b;
   const auto& ma = pick(a, args.what, &shape_a);
   const auto& mb = pick(b, args.what, &shape_b);
@@ -71,6 +75,20 @@ int compare(const CompareArgs& args) {
   return same ? 0 : 1;
 }
 
+// A number strictly between 0 and 1 (CLI::Range took 0, 1 and NaN; 1e-400
+// reads as 0).
+CLI::Validator significance_level() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || *end != '\0' || !(v > 0 && v < 1))
+          return "--alpha must be a number strictly between 0 and 1, got " + text;
+        return "";
+      },
+      "in (0, 1)");
+}
+
 }  // namespace
 
 void add_compare_command(CLI::App& app, Action& action) {
@@ -81,9 +99,9 @@ void add_compare_command(CLI::App& app, Action& action) {
   c->add_option("dir_a", args->dir_a, "Output directory of a run")->required();
   c->add_option("dir_b", args->dir_b, "Output directory of another run (an independent ensemble: another seed)")
       ->required();
-  c->add_option("--alpha", args->alpha, "Significance level: different when p < alpha")
+  c->add_option("--alpha", args->alpha, "Significance level in (0, 1): different when p < alpha")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(significance_level());
   c->add_option("--what", args->what, "Which histogram of map.h5")->capture_default_str()->check(
       CLI::IsMember({"map", "zoom"}));
   c->add_option("--min-count", args->min_count, "Bins with fewer counts in A + B are pooled into one bin")

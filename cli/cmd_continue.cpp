@@ -38,19 +38,12 @@ struct FinishedRun {
   double end_time = 0;  // in T
 };
 
+// Read as render and compare read it (saved_run.hpp): a plain file of the form
+// arnoldweb writes; SavedRunError (exit 2) naming it otherwise.
 FinishedRun read_finished(const std::string& dir) {
   FinishedRun f;
   f.summary = dir + "/summary.json";
-  std::ifstream in(f.summary, std::ios::binary);
-  if (!in) throw OutputError(f.summary, "cannot read it: is " + dir + " the output directory of a finished run?");
-  nlohmann::json j;
-  try {
-    in >> j;
-  } catch (const std::exception& e) {
-    throw OutputError(f.summary, std::string("not a summary of arnoldweb (") + e.what() + ")");
-  }
-  if (!j.is_object() || !j.contains("scene_toml") || !j["scene_toml"].is_string())
-    throw OutputError(f.summary, "has no scene_toml: not a summary of an arnoldweb run");
+  const nlohmann::json j = nlohmann::json::parse(read_saved_summary(dir));
   f.scene_toml = j["scene_toml"].get<std::string>();
   const auto time = j.find("time");
   if (time != j.end() && time->is_object() && time->contains("end") && (*time)["end"].is_number())
@@ -66,8 +59,9 @@ int continue_run(ContinueFlags& f) {
   const FinishedRun run = read_finished(from);
   const std::string states = from + "/states.h5";
   if (!std::ifstream(states))
-    throw OutputError(states, "the run kept no final states to continue from: run it with "
-                              "observe.final_states = true");
+    throw SavedRunError(states, "the run kept no final states to continue from: run it with "
+                                "observe.final_states = true");
+  read_saved_file(from, "states.h5");  // checked against its size and digest in summary.json
   if (!(f.duration > 0))
     throw SceneError("--for", 0, 0, "run.duration", "--for must be a duration in T greater than 0");
   // the run's scene as run, then what continuing changes, then the user's --set

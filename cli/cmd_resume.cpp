@@ -2,9 +2,7 @@
 // OUTDIR (in OUTDIR.partial-PID). The scene comes from the checkpoint (its
 // text and --set values as they were given), planned again; --device may
 // choose another device. The result is the same bits as an uninterrupted run.
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "arnoldweb/arnoldweb.hpp"
 #include "arnoldweb/checkpoint.hpp"
@@ -26,10 +24,7 @@ int resume(const ResumeFlags& f) {
   std::string out = f.out;
   while (out.size() > 1 && out.back() == '/') out.pop_back();
   const FoundCheckpoint found = checkpoint_to_resume(out);
-  std::ifstream in(found.file, std::ios::binary);
-  std::stringstream bytes;
-  bytes << in.rdbuf();
-  const CheckpointInfo info = read_checkpoint_info(bytes.str(), found.file);
+  const CheckpointInfo info = read_checkpoint_info(read_checkpoint_file(found.file), found.file);
   std::vector<std::string> sets = info.overrides, labels = info.override_labels;
   labels.resize(sets.size());
   sets.push_back("output.dir=" + out);

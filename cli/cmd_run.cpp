@@ -125,7 +125,7 @@ int execute_job(const PreparedJob& prepared, bool quiet, const std::optional<Fou
     std::cout << "ranks        " << cluster()->size() << " (MPI; rank 0 coordinates, drives " << backend.info().id
               << " and writes the outputs)\n";
   share_scene(job.main().scene);  // the other ranks plan it and serve
-  StopSignals signals;  // held until the outputs are written
+  StopSignals signals(prepared.output.expected_bytes);  // held until the outputs are written
   RunOptions options;
   options.stop = &signals.flag();
   const bool checkpointing = checkpoints.every_seconds != 0 || resume;
@@ -160,7 +160,8 @@ int execute_job(const PreparedJob& prepared, bool quiet, const std::optional<Fou
     for (const auto& file : files) std::cout << "wrote        " << file << "\n";
   }
   if (signals.signal()) {
-    const Result& last = result.results.empty() ? Result{} : result.results.back();
+    static const Result none;  // (a Result{} here made the ternary copy the whole result: GBs of maps)
+    const Result& last = result.results.empty() ? none : result.results.back();
     std::cerr << "arnoldweb: stopped by " << signals.name() << " after " << last.completed << " of "
               << last.trajectories << " trajectories"
               << (result.results.size() < job.parts.size() ? " (panels not run: " +

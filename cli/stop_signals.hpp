@@ -6,12 +6,15 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
 
 namespace arnoldweb::cli {
 
 class StopSignals {
  public:
-  StopSignals();   // installs the handlers
+  // Installs the handlers; the first signal's message says how much is still
+  // to be written (0: not said).
+  explicit StopSignals(std::uint64_t bytes_to_write = 0);
   ~StopSignals();  // puts the previous ones back
   StopSignals(const StopSignals&) = delete;
   StopSignals& operator=(const StopSignals&) = delete;

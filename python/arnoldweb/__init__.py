@@ -72,11 +72,42 @@ def compare_maps(a, b, min_count: float = 5) -> dict:
     totals: bins with fewer than ``min_count`` counts in both together are pooled into one bin.
     Returns a dict: chi2, dof, chi2_per_dof, p_value, total_a, total_b, bins, used_bins,
     pooled_bins, empty_bins. Runs of the same seed are not independent samples (p comes out too
-    large). ValueError for maps of different sizes, an empty map or one without counts."""
+    large). The maps hold counts: integers >= 0 of any numpy type (a float array of whole
+    numbers is taken as it is); ValueError for negative, fractional, non-finite or too large
+    values (``healpy.ud_grade`` averages a map by default: pass ``power=-2`` to add its counts),
+    for maps of different sizes, an empty map or one without counts."""
+    return _core.compare_maps(_counts(a, "a"), _counts(b, "b"), float(min_count))
+
+
+def _counts(values, name: str):
+    """A map of counts as contiguous uint64, or ValueError naming what is wrong (never a silent cast)."""
     import numpy as np
 
-    return _core.compare_maps(np.ascontiguousarray(a, dtype=np.uint64), np.ascontiguousarray(b, dtype=np.uint64),
-                              float(min_count))
+    x = np.asarray(values)
+    if x.ndim != 1:
+        raise ValueError(f"compare_maps: {name} must be a 1-D array of counts, got shape {x.shape}")
+    if x.dtype.kind == "u":
+        return np.ascontiguousarray(x, dtype=np.uint64)
+    if x.dtype.kind not in "if":
+        raise ValueError(f"compare_maps: {name} must hold counts (integers >= 0), got dtype {x.dtype}")
+    if x.dtype.kind == "f":
+        bad = ~np.isfinite(x)
+        if bad.any():
+            raise ValueError(f"compare_maps: {name} holds a non-finite value ({x[bad][0]!r} at index "
+                             f"{int(np.flatnonzero(bad)[0])}); counts are integers >= 0")
+        bad = x != np.floor(x)
+        if bad.any():
+            raise ValueError(f"compare_maps: {name} holds a value that is not a whole number ({x[bad][0]!r} at "
+                             f"index {int(np.flatnonzero(bad)[0])}); counts are integers >= 0 (healpy.ud_grade "
+                             "averages a map unless given power=-2)")
+        bad = x >= 2.0 ** 64
+        if bad.any():
+            raise ValueError(f"compare_maps: {name} holds a count too large for 64 bits ({x[bad][0]!r})")
+    bad = x < 0
+    if bad.any():
+        raise ValueError(f"compare_maps: {name} holds a negative count ({x[bad][0]!r} at index "
+                         f"{int(np.flatnonzero(bad)[0])}); counts are integers >= 0")
+    return np.ascontiguousarray(x, dtype=np.uint64)
 
 
 def default_device() -> str:

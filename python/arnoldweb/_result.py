@@ -7,6 +7,8 @@ from typing import Any, Dict, List, Optional
 
 import numpy as np
 
+from . import _arnoldweb as _core
+
 __all__ = ["Result", "COUNTER_NAMES", "INDICATOR_NAMES"]
 
 #: The fields of Result.counters, in order.
@@ -201,10 +203,8 @@ class Result:
         if self._saved is not None:
             return self._cache["summary"]
         written = self._record.written_dir
-        if written:
-            path = os.path.join(written, self.subdir, "summary.json")
-            with open(path, encoding="utf-8") as f:
-                return json.load(f)
+        if written:  # read back as render and compare read it: checked (OutputError if damaged)
+            return _core.read_saved_summary(os.path.join(written, self.subdir) if self.subdir else written)
         return self._cached("summary", lambda: json.loads(self._record.summary_json(self._part)))
 
     @property

@@ -2,7 +2,7 @@
 indicators.h5, panel-<name>/), as a run gave it."""
 from __future__ import annotations
 
-import json
+import io
 import os
 from typing import Any, Callable, Optional
 
@@ -23,10 +23,18 @@ def _h5py(path: str):
     return h5py
 
 
+def _checked(path: str):
+    """The file at path (in an output directory) as a file object of its bytes, read by the library's
+    reader of saved runs: a plain file with the size and digest summary.json records (OutputError
+    naming it otherwise). h5py then reads exactly the bytes that were checked."""
+    folder, name = os.path.split(path)
+    return io.BytesIO(_core._read_saved_file(folder, name))
+
+
 def _states(path: str) -> Optional[dict]:
     h5py = _h5py(path)
     out = {}
-    with h5py.File(path, "r") as f:
+    with h5py.File(_checked(path), "r") as f:
         for group in ("initial", "final"):
             if group in f:
                 out[group] = {name: f[group][name][()] for name in f[group] if isinstance(f[group][name], h5py.Dataset)}
@@ -35,7 +43,7 @@ def _states(path: str) -> Optional[dict]:
 
 def _indicators(path: str) -> Optional[np.ndarray]:
     h5py = _h5py(path)
-    with h5py.File(path, "r") as f:
+    with h5py.File(_checked(path), "r") as f:
         present = [n for n in INDICATOR_NAMES if n in f and isinstance(f[n], h5py.Dataset)]
         if not present:
             return None
@@ -52,15 +60,12 @@ def _lazy(path: str, read: Callable[[str], Any]) -> Any:
 
 
 def _part(folder: str, name: str, title: str) -> dict:
-    summary_file = os.path.join(folder, "summary.json")
-    try:
-        with open(summary_file, encoding="utf-8") as f:
-            summary = json.load(f)
-    except OSError as e:
-        raise OutputError(f"{summary_file}: cannot be read ({e.strerror}); is {folder} an arnoldweb output directory?",
-                          path=summary_file) from None
-    except json.JSONDecodeError as e:
-        raise OutputError(f"{summary_file}: not JSON ({e})", path=summary_file) from None
+    # read as render and compare read it: a plain file, without blocking, of the form arnoldweb
+    # writes (OutputError naming it otherwise); a panel's is also checked against the digest
+    # that the main summary.json records for it
+    if name:
+        _core._read_saved_file(os.path.dirname(folder), f"panel-{name}/summary.json")
+    summary = _core.read_saved_summary(folder)
     maps = {"nside": 0, "map": None, "frames": None, "zoom": None}
     if os.path.exists(os.path.join(folder, "map.h5")):
         maps = _core._read_maps(folder)  # the library's reader (as arnoldweb compare): OutputError when bad
@@ -95,8 +100,9 @@ def load(out_dir: "str | os.PathLike[str]") -> Result:
     :func:`arnoldweb.run` with ``out``): map, frames and zoom (read by the library, the map
     checked against the digest in summary.json), states and indicators (from states.h5 and
     indicators.h5, read with h5py when first asked for), counters, energy, digests, device and
-    summary, and the panels (panel-<name>/). Raises OutputError naming a missing, unreadable or
-    changed file. A loaded Result pickles; it cannot be written again (its files are there)."""
+    summary, and the panels (panel-<name>/). Every file is read as ``arnoldweb render`` reads it:
+    a plain file, checked against the size and digest summary.json records for it. Raises
+    OutputError naming a missing, unreadable, damaged or changed file. A loaded Result pickles; it cannot be written again (its files are there)."""
     folder = os.path.abspath(os.fspath(out_dir))
     main = _part(folder, "", "")
     titles = {p.get("name", ""): p.get("title", "") for p in main["summary"].get("scene", {}).get("panel", [])

@@ -1,7 +1,9 @@
 // An output directory written earlier, read back by the library's reader
 // (read_saved_maps: summary.json and map.h5, the same code as `arnoldweb
 // compare` and `arnoldweb render`), for arnoldweb.load(). The map's digest is
-// computed here as summary.json's is, so the package can check the file.
+// computed here as summary.json's is, so the package can check the file; every
+// other file (summary.json, states.h5, indicators.h5) comes through the same
+// checked reader (read_saved_summary, read_saved_file).
 #include "bindings.hpp"
 
 #include <nanobind/stl/string.h>
@@ -43,6 +45,24 @@ nb::dict read_maps(const std::string& dir) {
 }  // namespace
 
 void bind_saved(nb::module_& m) {
+  m.def(
+      "read_saved_summary", [](const std::string& dir) { return json_loads(arnoldweb::read_saved_summary(dir)); },
+      nb::arg("dir"),
+      "summary.json of an output directory, read and checked as render and compare read it "
+      "(a plain file, a JSON object of the right form; OutputError otherwise).");
+  m.def(
+      "_read_saved_file",
+      [](const std::string& dir, const std::string& name) {
+        std::string bytes;
+        {
+          nb::gil_scoped_release unlocked;
+          bytes = arnoldweb::read_saved_file(dir, name);
+        }
+        return nb::bytes(bytes.data(), bytes.size());
+      },
+      nb::arg("dir"), nb::arg("name"),
+      "The bytes of a file of an output directory, checked against the size and digest summary.json "
+      "records (OutputError naming it otherwise).");
   m.def("_read_maps", &read_maps, nb::arg("dir"),
         "The maps of an output directory (summary.json, map.h5): nside, map, frames, zoom and the "
         "map's digest as summary.json computes it. Raises OutputError naming a missing or bad file.");

@@ -169,14 +169,14 @@ TEST_SUITE("output") {
     CHECK(s.map_file == dir + "/map.h5");
     CHECK_THROWS_WITH_AS(read_saved_maps(dir + "/nothing-here"), doctest::Contains("nothing-here: no such directory"),
                          OutputError);
-    const std::string missing = dir + "/map.h5: missing", broken = dir + "/map.h5: cannot open it",
+    const std::string missing = dir + "/map.h5: missing", broken = dir + "/map.h5: it is 8 bytes, but summary.json",
                       no_summary = dir + "/summary.json: cannot read it";
     fs::remove(dir + "/map.h5");
-    CHECK_THROWS_WITH_AS(read_saved_maps(dir), doctest::Contains(missing.c_str()), OutputError);
+    CHECK_THROWS_WITH_AS(read_saved_maps(dir), doctest::Contains(missing.c_str()), SavedRunError);
     std::ofstream(dir + "/map.h5") << "not HDF5";
-    CHECK_THROWS_WITH_AS(read_saved_maps(dir), doctest::Contains(broken.c_str()), OutputError);
+    CHECK_THROWS_WITH_AS(read_saved_maps(dir), doctest::Contains(broken.c_str()), SavedRunError);
     fs::remove(dir + "/summary.json");
-    CHECK_THROWS_WITH_AS(read_saved_maps(dir), doctest::Contains(no_summary.c_str()), OutputError);
+    CHECK_THROWS_WITH_AS(read_saved_maps(dir), doctest::Contains(no_summary.c_str()), SavedRunError);
   }
 
   TEST_CASE("an existing output directory is refused without force; with it only arnoldweb's own is replaced") {

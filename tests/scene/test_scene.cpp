@@ -329,7 +329,7 @@ TEST_SUITE("scene") {
 
   TEST_CASE("integers are accepted where floats are expected") {
     const Scene s = parse(
-        "[model]\nenergy = 15\n[integrator]\nstep = 1\ntolerance = 0\n"
+        "[model]\nenergy = 15\n[integrator]\nstep = 1\n"
         "[run]\naverage = 50\nduration = 100\n[observe]\nenergy_error = { every = 2 }\n"
         "max_energy_error = 1\n",
         {"integrator.tolerance=1e-9"});
@@ -673,8 +673,13 @@ TEST_SUITE("scene") {
   }
 
   TEST_CASE("--set: the later override wins, and overrides win over the file") {
-    Scene s = parse("[model]\nenergy = -5\n", {"model.energy=3"});  // fixes a bad file value
+    Scene s = parse("[model]\nenergy = 5\n", {"model.energy=3"});
     CHECK(s.energy == 3.0);
+    // but a wrong value in the file is an error whatever overrides it (issue 27, item 9)
+    const SceneError bad = error_of("[model]\nenergy = \"abc\"\n", {"model.energy=3"});
+    CHECK(bad.file() == "<test>");
+    CHECK(bad.line() == 2);
+    CHECK(bad.key() == "model.energy");
     s = parse("", {"model.energy=3", "model.energy=4"});
     CHECK(s.energy == 4.0);
     CHECK(s.pos("model.energy").set_index == 2);

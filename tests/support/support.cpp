@@ -10,6 +10,7 @@
 #include <cstring>
 #include <csignal>
 #include <sstream>
+#include <thread>
 
 #include <array>
 #include <charconv>
@@ -124,6 +125,7 @@ StartedCli start_cli(const std::vector<std::string>& args, const CliOptions& o) 
     close(fds[0]);
     close(fds[1]);
     if (!o.cwd.empty() && chdir(o.cwd.c_str()) != 0) _exit(126);
+    std::signal(SIGQUIT, SIG_DFL);  // as at a terminal (a background job of a shell starts with it ignored)
     if (o.file_size_limit > 0) {
       std::signal(SIGXFSZ, SIG_IGN);
       rlimit lim{static_cast<rlim_t>(o.file_size_limit), static_cast<rlim_t>(o.file_size_limit)};
@@ -164,6 +166,28 @@ int StartedCli::finish() {
   if (WIFEXITED(status)) return WEXITSTATUS(status);
   if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
   return -1;
+}
+
+int StartedCli::finish_within(double seconds) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  int status = 0;
+  while (waitpid(pid, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > end) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      close(fd);
+      fd = -1;
+      output += "\n(killed: still running after " + std::to_string(seconds) + " s)";
+      return -2;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  char buf[4096];
+  ssize_t n;
+  while ((n = read(fd, buf, sizeof buf)) > 0) output.append(buf, static_cast<std::size_t>(n));
+  close(fd);
+  fd = -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
 int run_cli(const std::vector<std::string>& args, std::string* out, const CliOptions& options) {

@@ -100,6 +100,9 @@ struct StartedCli {
   bool wait_for(const std::string& text, double seconds);
   // Waits for the exit; returns the exit code, or 128 + signal if killed.
   int finish();
+  // The same, but waits at most `seconds`: -2 (after killing it) if it had
+  // not ended by then, so that a hang fails the test instead of stopping it.
+  int finish_within(double seconds);
 };
 StartedCli start_cli(const std::vector<std::string>& args, const CliOptions& options = {});
 

@@ -33,4 +33,9 @@ struct CheckpointInfo {
 // CheckpointError naming `path` (damaged, truncated, not a checkpoint).
 CheckpointInfo read_checkpoint_info(const std::string& image, const std::string& path);
 
+// The bytes of the checkpoint file `path`, read as a plain file without
+// blocking (a FIFO or a device in its place is refused, not waited on);
+// CheckpointError naming it otherwise.
+std::string read_checkpoint_file(const std::string& path);
+
 }  // namespace arnoldweb

@@ -80,6 +80,17 @@ class OutputRefused : public OutputError {
   int exit_code() const noexcept override { return 2; }
 };
 
+// An output directory read back (render, compare, the Python reader) that
+// cannot be used as it is: missing, a file that is not a plain file, a
+// summary.json of the wrong form, a file whose size or digest differs from
+// what summary.json records, data of another shape than it declares. Bad
+// input: exit code 2; `path` names the file.
+class SavedRunError : public OutputError {
+ public:
+  using OutputError::OutputError;
+  int exit_code() const noexcept override { return 2; }
+};
+
 // A checkpoint that cannot be used: damaged, written by another version, or
 // of another scene. Bad input: exit code 2; the checkpoint is left as it is.
 class CheckpointError : public Error {

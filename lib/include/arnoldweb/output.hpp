@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -89,8 +90,20 @@ std::vector<std::string> write_job(const Job& job, const JobResult& result, cons
 std::vector<std::string> write_outputs(const Plan& plan, const Result& result, const std::string& dir,
                                        const OutputOptions& options);
 
-// The summary as JSON text; `files` lists the files of its directory.
-std::string summary_json(const Plan& plan, const Result& result, const std::vector<std::string>& files = {});
+// A file of an output directory as its summary.json records it
+// ("file_digests"): the size and the XXH3-128 digest of its bytes, taken by
+// the atomic writer that put it in place and checked when the directory is
+// read back (render, compare, resume, Python; docs/reliability.md).
+struct FileDigest {
+  std::uint64_t bytes = 0;
+  std::string xxh3_128;  // 32 lowercase hex digits
+};
+using FileDigests = std::map<std::string, FileDigest>;  // by name relative to the directory
+
+// The summary as JSON text; `files` lists the files of its directory and
+// `digests` their sizes and digests ("file_digests", written when given).
+std::string summary_json(const Plan& plan, const Result& result, const std::vector<std::string>& files = {},
+                         const FileDigests* digests = nullptr);
 
 // Individual writers (each atomic).
 void write_text_file(const std::string& path, const std::string& text);
@@ -160,11 +173,25 @@ struct SavedMaps {
   std::vector<std::vector<std::uint64_t>> frames;  // one map per frame (observe.frames)
   int zoom_resolution = 0;                // R (0: no zoom)
   std::vector<std::uint64_t> zoom;        // R x R counts, row y then column x
+  std::string note;                       // "" or a note for the user (an older directory: files unchecked)
 };
-// OutputError naming the directory or the file that is missing, unreadable or
-// inconsistent (a map whose size is not 12 nside^2). A run with a zoom but no
-// velocity map gives an empty map, one without either has no map.h5 (an error).
+// SavedRunError (exit 2) naming the directory or the file that is missing, not
+// a plain file, damaged (its size or digest is not what summary.json records)
+// or inconsistent (a map of another shape than summary.json declares;
+// docs/reliability.md). A run with a zoom but no velocity map gives an empty
+// map, one without either has no map.h5 (an error).
 SavedMaps read_saved_maps(const std::string& dir);
+
+// <dir>/summary.json, read and checked as every reader of saved runs does
+// (a plain file, a JSON object of the form arnoldweb writes): its text.
+// SavedRunError otherwise.
+std::string read_saved_summary(const std::string& dir);
+
+// The bytes of the file `name` of an output directory (e.g. "states.h5",
+// "panel-a/summary.json"), read as every reader of saved runs reads them: a
+// plain file with the size and digest its summary.json records (an older
+// directory without digests: read unchecked). SavedRunError otherwise.
+std::string read_saved_file(const std::string& dir, const std::string& name);
 
 // Draws the pictures of an output directory written earlier (from its
 // summary.json and map.h5; e.g. a GPU node's run, on a machine with cairo),

@@ -152,6 +152,7 @@ struct Scene {
     std::string name;               // [a-z0-9_-]+, names the panel's output folder
     std::string title;
     std::vector<std::string> sets;  // --set style overrides applied to this scene
+    std::vector<std::string> set_origins;  // where each was written: "file:line:col"
   };
   std::vector<Panel> panels;
 

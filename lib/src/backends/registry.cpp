@@ -7,6 +7,7 @@
 #include "arnoldweb/errors.hpp"
 #include "aw_params.h"
 #include "backends/backends.hpp"
+#include "os/quit_signal.hpp"
 
 namespace arnoldweb {
 namespace {
@@ -17,6 +18,7 @@ struct Inventory {
 };
 
 void take_inventory(Inventory& inv) {
+  const detail::KeepQuitSignal keep;  // PoCL's LLVM would take SIGQUIT (os/quit_signal.hpp)
   inv.devices.push_back(detail::cpu_device_info());
 #ifdef ARNOLDWEB_HAVE_CUDA
   for (auto& d : detail::cuda_devices(inv.problems)) inv.devices.push_back(d);

@@ -5,12 +5,15 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/output.hpp"
+#include "os/regular_file.hpp"
+#include "output/file_digest.hpp"
 
 namespace arnoldweb {
 namespace detail {
@@ -86,6 +89,7 @@ void write_file_atomically(const std::string& path, const std::string& bytes) {
     ::unlink(tmp.c_str());
     throw OutputError(path, "write failed: " + why_failed(path, err, bytes.size()));
   }
+  DigestLedger::record(path, digest_bytes(bytes));
 }
 
 void write_atomically(const std::string& path, const std::function<void(const std::string&)>& produce) {
@@ -97,8 +101,11 @@ void write_atomically(const std::string& path, const std::function<void(const st
     } catch (const OutputError& e) {
       throw OutputError(path, e.what());
     }
+    const RegularFile written = read_regular_file(tmp, UINT64_MAX);  // for the digest
+    if (!written.why.empty()) throw OutputError(path, "cannot read back what was written: " + written.why);
     if (std::rename(tmp.c_str(), path.c_str()) != 0)
       throw OutputError(path, std::string("cannot rename into place: ") + std::strerror(errno));
+    DigestLedger::record(path, digest_bytes(written.bytes));
   } catch (...) {
     std::remove(tmp.c_str());
     throw;

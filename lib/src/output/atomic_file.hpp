@@ -2,7 +2,9 @@
 // under a temporary name in its final directory with every write and close
 // checked, flushed to disk, then renamed into place: a reader never sees a
 // partial file, and a failure (full disk) leaves none behind and says how many
-// bytes were needed and how many were free.
+// bytes were needed and how many were free. Each file put in place is
+// recorded, with its size and digest, in the DigestLedger open on this
+// thread (file_digest.hpp), for the summary.json that lists it.
 #pragma once
 
 #include <cstdint>

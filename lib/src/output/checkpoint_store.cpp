@@ -11,18 +11,25 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <cstdint>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "arnoldweb/errors.hpp"
+#include "arnoldweb/checkpoint.hpp"
 #include "arnoldweb/output.hpp"
+#include "os/regular_file.hpp"
 #include "output/atomic_file.hpp"
 #include "output/output_dir.hpp"
 
 namespace arnoldweb {
 namespace fs = std::filesystem;
 
+
+std::string read_checkpoint_file(const std::string& path) {
+  detail::RegularFile f = detail::read_regular_file(path, UINT64_MAX);
+  if (!f.why.empty()) throw CheckpointError(path, "cannot read the checkpoint: " + f.why);
+  return std::move(f.bytes);
+}
 
 std::vector<FoundCheckpoint> find_checkpoints(const std::string& dir) {
   std::vector<FoundCheckpoint> found;
@@ -54,10 +61,7 @@ std::string CheckpointStore::adopt(const FoundCheckpoint& found) {
     throw OutputError(found.staging_dir, "its run (process " + std::to_string(found.pid) +
                                              ") is still going; wait for it or stop it (kill -TERM " +
                                              std::to_string(found.pid) + " writes a checkpoint) first");
-  std::ifstream in(found.file, std::ios::binary);
-  std::stringstream bytes;
-  bytes << in.rdbuf();
-  if (!in) throw OutputError(found.file, std::string("cannot read the checkpoint: ") + std::strerror(errno));
+  const std::string bytes = read_checkpoint_file(found.file);
   const std::string mine = dir_ + ".partial-" + std::to_string(::getpid());
   if (found.staging_dir != mine) {
     if (std::rename(found.staging_dir.c_str(), mine.c_str()) != 0)
@@ -67,7 +71,7 @@ std::string CheckpointStore::adopt(const FoundCheckpoint& found) {
                                   "arnoldweb staging directory of process " + std::to_string(::getpid()) + "\n");
   }
   staging_ = mine;
-  return bytes.str();
+  return bytes;
 }
 
 void CheckpointStore::save(const std::string& image) {

@@ -19,6 +19,7 @@
 #include <set>
 
 #include "arnoldweb/errors.hpp"
+#include "os/regular_file.hpp"
 #include "output/atomic_file.hpp"
 
 namespace arnoldweb {
@@ -84,8 +85,12 @@ Manifest read_manifest(const fs::path& dir) {
     return m;
   }
   try {
-    std::ifstream in(summary, std::ios::binary);
-    const nlohmann::json j = nlohmann::json::parse(in);
+    const RegularFile f = read_regular_file(summary.string(), kMaxSummaryBytes);
+    if (!f.why.empty()) {
+      m.problem = "its summary.json cannot be read (" + f.why + ")";
+      return m;
+    }
+    const nlohmann::json j = nlohmann::json::parse(f.bytes);
     if (!j.is_object() || !j.contains("arnoldweb") || !j["arnoldweb"].is_string()) {
       m.problem = "its summary.json was not written by arnoldweb";
       return m;

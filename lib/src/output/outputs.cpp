@@ -1,7 +1,8 @@
 // arnoldweb: writing a job's output directory (output.hpp). Everything goes
 // into a staging directory beside the final one (output_dir.hpp) and is moved
 // into place at the end: a directory is either absent or complete, and
-// summary.json, written last, lists every file in it.
+// summary.json, written last, lists every file in it with its size and digest
+// (file_digest.hpp: taken by the atomic writer of each file).
 #include <filesystem>
 
 #include "arnoldweb/analysis.hpp"
@@ -10,6 +11,7 @@
 #include "arnoldweb/output.hpp"
 #include "aw_params.h"
 #include "output/analysis_files.hpp"
+#include "output/file_digest.hpp"
 #include "output/indicator_pictures.hpp"
 #include "output/output_dir.hpp"
 #include "output/pictures.hpp"
@@ -87,6 +89,7 @@ std::vector<std::string> write_job(const Job& job, const JobResult& jr, const Ou
   if (o.scene_file.empty()) o.scene_file = main.scene.file;
   detail::Staging staging(main.scene.output_dir, o);
   const fs::path root(staging.path());
+  const detail::DigestLedger ledger;  // every file's size and digest, as it is written
 
   std::vector<std::string> all;  // every file, relative to the job's directory
   std::string failure;
@@ -109,7 +112,8 @@ std::vector<std::string> write_job(const Job& job, const JobResult& jr, const Ou
       write_run_files(part.plan, jr.results[k], sub, names);
     });
     guarded([&] {
-      write_text_file((sub / "summary.json").string(), summary_json(part.plan, jr.results[k], names));
+      const FileDigests digests = ledger.of(sub.string(), names);
+      write_text_file((sub / "summary.json").string(), summary_json(part.plan, jr.results[k], names, &digests));
       names.push_back("summary.json");
     });
     for (const auto& n : prefixed(part.subdir, names)) all.push_back(n);
@@ -127,7 +131,8 @@ std::vector<std::string> write_job(const Job& job, const JobResult& jr, const Ou
   if (!jr.results.empty()) {
     std::string why;
     try {
-      write_text_file((root / "summary.json").string(), summary_json(main, jr.results[0], all));
+      const FileDigests digests = ledger.of(root.string(), all);
+      write_text_file((root / "summary.json").string(), summary_json(main, jr.results[0], all, &digests));
     } catch (const Error& e) {
       why = e.what();
     }

@@ -1,8 +1,6 @@
 // arnoldweb: which pictures a run gets, and how they are titled.
 #include "output/pictures.hpp"
 
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -35,26 +33,22 @@ std::string caption_of(const Result& r) {
 
 bool have_ffmpeg() { return !find_program("ffmpeg").empty(); }
 
-// frames.mp4 from frames/frame_NNN.png (atomically: ffmpeg writes a temporary).
-// ffmpeg gets its arguments as a vector: no shell, so no directory name can
-// run a command.
+// frames.mp4 from frames/frame_NNN.png, written atomically (into a temporary
+// that ffmpeg fills, so "-f mp4": the name does not end in .mp4). ffmpeg gets
+// its arguments as a vector: no shell, so no directory name can run a command.
 void make_movie(const std::string& dir) {
-  const std::string tmp = dir + "/.frames.tmp-" + std::to_string(::getpid()) + ".mp4";
-  const ProgramRun run = run_program({"ffmpeg", "-nostdin", "-loglevel", "error", "-y", "-framerate", "2", "-i",
-                                      dir + "/frames/frame_%03d.png", "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2",
-                                      "-pix_fmt", "yuv420p", tmp});
-  if (run.exit_code != 0 || !std::filesystem::exists(tmp)) {
-    std::remove(tmp.c_str());
-    std::string why = run.signal ? "killed by signal " + std::to_string(run.signal)
-                                 : "exit " + std::to_string(run.exit_code);
-    if (!run.output.empty()) why += ": " + run.output.substr(0, 400);
-    throw OutputError(dir + "/frames.mp4", "ffmpeg failed (" + why + ")");
-  }
-  sync_file(tmp);
-  if (std::rename(tmp.c_str(), (dir + "/frames.mp4").c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw OutputError(dir + "/frames.mp4", "cannot rename into place");
-  }
+  const std::string movie = dir + "/frames.mp4";
+  write_atomically(movie, [&](const std::string& tmp) {
+    const ProgramRun run = run_program({"ffmpeg", "-nostdin", "-loglevel", "error", "-y", "-framerate", "2", "-i",
+                                        dir + "/frames/frame_%03d.png", "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2",
+                                        "-pix_fmt", "yuv420p", "-f", "mp4", tmp});
+    if (run.exit_code != 0 || !std::filesystem::exists(tmp)) {
+      std::string why = run.signal ? "killed by signal " + std::to_string(run.signal)
+                                   : "exit " + std::to_string(run.exit_code);
+      if (!run.output.empty()) why += ": " + run.output.substr(0, 400);
+      throw OutputError(movie, "ffmpeg failed (" + why + ")");
+    }
+  });
 }
 
 }  // namespace

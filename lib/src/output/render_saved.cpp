@@ -1,12 +1,13 @@
 // arnoldweb: pictures of a saved run: the scene and counts come back from
-// summary.json, the maps from map.h5.
+// summary.json, the maps from map.h5, both read and checked by SavedDir
+// (saved_run.hpp) before anything is drawn.
+#include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/output.hpp"
+#include "output/file_digest.hpp"
 #include "output/pictures.hpp"
 #include "output/saved_run.hpp"
 
@@ -15,41 +16,21 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Saved {
-  Plan plan;
-  Result result;
-};
-
-Saved load(const std::string& dir) {
-  const nlohmann::json j = detail::read_summary(dir);
-  const std::string summary_path = dir + "/summary.json";
-  Saved s;
-  s.plan = make_plan(parse_scene(j.at("scene_toml").get<std::string>(), summary_path));
-  Result& r = s.result;
-  r.trajectories = j.at("trajectories").get<std::uint64_t>();
-  r.completed = j.at("completed").get<std::uint64_t>();
-  r.binned = j.at("binned").get<std::uint64_t>();
-  r.device.id = j.at("device").at("id").get<std::string>();
-  r.device.name = j.at("device").at("name").get<std::string>();
-  detail::read_map_h5(dir, r);
-  return s;
-}
-
-// Adds the pictures drawn into an output directory to its summary.json's
-// list of files, so that the directory stays recognisably arnoldweb's.
-void list_in_summary(const std::string& dir, const std::vector<std::string>& paths) {
-  const std::string summary_path = dir + "/summary.json";
-  std::ifstream in(summary_path);
-  nlohmann::ordered_json j = nlohmann::ordered_json::parse(in, nullptr, false);
-  if (j.is_discarded() || !j.is_object()) return;
-  if (!j.contains("files") || !j["files"].is_array()) return;  // an older directory: names are known
-  for (const std::string& p : paths) {
-    const std::string rel = fs::path(p).lexically_relative(dir).string();
-    bool listed = false;
-    for (const auto& f : j["files"]) listed |= f.is_string() && f.get<std::string>() == rel;
-    if (!listed) j["files"].push_back(rel);
-  }
-  write_text_file(summary_path, j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n");
+// Adds the files drawn into a saved directory to its summary.json: to its
+// list of files, so that the directory stays recognisably arnoldweb's, and
+// with their new sizes and digests, so that it still reads back checked.
+void list_in_summary(const detail::SavedDir& saved, const detail::DigestLedger& ledger,
+                     const std::vector<std::string>& names) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::parse(saved.summary_text());
+  const bool listed = j.contains("files") && j["files"].is_array();
+  if (!listed && !saved.checked()) return;  // an older directory: names are known
+  if (listed)
+    for (const std::string& name : names)
+      if (std::find(j["files"].begin(), j["files"].end(), name) == j["files"].end()) j["files"].push_back(name);
+  if (saved.checked())
+    for (const auto& [name, digest] : ledger.of(saved.dir(), names))
+      j["file_digests"][name] = detail::file_digest_json(digest);
+  write_text_file(saved.summary_path(), j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n");
 }
 
 }  // namespace
@@ -57,35 +38,42 @@ void list_in_summary(const std::string& dir, const std::vector<std::string>& pat
 std::vector<std::string> render_saved(const std::string& dir) {
   if (!detail::pictures_available())
     throw OutputError(dir, "this build has no pictures (cairo was not found when it was configured)");
-  std::vector<std::string> written;
-  const Saved main = load(dir);
-  std::vector<std::string> names;
-  detail::write_pictures(main.plan, main.result, dir, names);
-  for (const auto& n : names) written.push_back(dir + "/" + n);
-  std::vector<Saved> panels;
+  // everything is read and checked before anything is drawn
+  const detail::SavedDir main_dir(dir);
+  const detail::SavedRun main = detail::read_saved_run(main_dir);
+  std::vector<detail::SavedDir> panel_dirs;
+  std::vector<detail::SavedRun> panels;
+  std::vector<const Scene::Panel*> panel_of;
+  for (const Scene::Panel& p : main.plan.scene.panels) {
+    const std::string sub = "panel-" + p.name;
+    if (!main_dir.holds(sub + "/summary.json")) continue;  // the run stopped before this panel
+    panel_dirs.emplace_back(main_dir, sub);
+    panels.push_back(detail::read_saved_run(panel_dirs.back()));
+    panel_of.push_back(&p);
+  }
   std::vector<FigurePanel> figure_panels;
-  for (const auto& p : main.plan.scene.panels) {
-    const std::string pdir = dir + "/panel-" + p.name;
-    if (!fs::exists(pdir + "/summary.json")) continue;
-    panels.push_back(load(pdir));
+  for (std::size_t i = 0; i < panels.size(); ++i)
+    figure_panels.push_back({panel_of[i]->name, panel_of[i]->title, &panels[i].plan, &panels[i].result});
+
+  const detail::DigestLedger ledger;  // the sizes and digests of what is drawn
+  std::vector<std::string> names;      // relative to dir
+  detail::write_pictures(main.plan, main.result, dir, names);
+  for (std::size_t i = 0; i < panels.size(); ++i) {
     std::vector<std::string> pnames;
-    detail::write_pictures(panels.back().plan, panels.back().result, pdir, pnames);
-    std::vector<std::string> ppaths;
-    for (const auto& n : pnames) ppaths.push_back(pdir + "/" + n);
-    list_in_summary(pdir, ppaths);
-    written.insert(written.end(), ppaths.begin(), ppaths.end());
+    detail::write_pictures(panels[i].plan, panels[i].result, panel_dirs[i].dir(), pnames);
+    list_in_summary(panel_dirs[i], ledger, pnames);
+    const std::string sub = "panel-" + panel_of[i]->name;
+    for (const auto& n : pnames) names.push_back(sub + "/" + n);
+    names.push_back(sub + "/summary.json");
   }
-  for (std::size_t k = 0, i = 0; k < main.plan.scene.panels.size() && i < panels.size(); ++k)
-    if (fs::exists(dir + "/panel-" + main.plan.scene.panels[k].name + "/summary.json")) {
-      figure_panels.push_back({main.plan.scene.panels[k].name, main.plan.scene.panels[k].title, &panels[i].plan,
-                               &panels[i].result});
-      ++i;
-    }
-  if (!figure_panels.empty()) {
-    const std::string fig = write_figure(dir, main.plan, main.result, figure_panels);
-    if (!fig.empty()) written.push_back(fig);
-  }
-  list_in_summary(dir, written);
+  if (!figure_panels.empty() && !write_figure(dir, main.plan, main.result, figure_panels).empty())
+    names.push_back("figure.png");
+  list_in_summary(main_dir, ledger, names);
+
+  std::vector<std::string> written;
+  for (const auto& n : names)
+    if (fs::path(n).filename() != "summary.json") written.push_back(dir + "/" + n);
+  if (!main_dir.note().empty()) written.push_back("note: " + main_dir.note());
   return written;
 }
 

@@ -7,6 +7,7 @@
 
 #include "arnoldweb/output.hpp"
 #include "arnoldweb/version.hpp"
+#include "output/file_digest.hpp"
 #include "plan/output_table.hpp"
 
 namespace arnoldweb {
@@ -27,7 +28,8 @@ std::string utc_now() {
 
 }  // namespace
 
-std::string summary_json(const Plan& plan, const Result& r, const std::vector<std::string>& files) {
+std::string summary_json(const Plan& plan, const Result& r, const std::vector<std::string>& files,
+                         const FileDigests* digests) {
   json j;
   j["arnoldweb"] = ARNOLDWEB_VERSION;
   j["date"] = utc_now();
@@ -111,6 +113,8 @@ std::string summary_json(const Plan& plan, const Result& r, const std::vector<st
   // every file of the directory (besides summary.json itself): what --force
   // may replace, and nothing else
   j["files"] = files;
+  // their sizes and digests, checked when the directory is read back
+  if (digests) j["file_digests"] = detail::file_digests_json(*digests);
   // names that are not UTF-8 (paths may hold any bytes) are written with U+FFFD
   return j.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }

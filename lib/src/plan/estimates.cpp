@@ -93,12 +93,16 @@ void check_memory(const Plan& plan, const DeviceInfo& dev, std::uint64_t host_av
                     "state records of " + std::to_string(e.max_chunk) + " trajectories per launch need " +
                         mib(e.device_bytes) + " on " + where + ", which has " + mib(avail) +
                         ": set ensemble.chunk smaller");
-  if (host_available > 0 && e.host_bytes > static_cast<double>(host_available)) {
+  // a CPU device (the cpu backend, PoCL) holds its buffers in this process's
+  // memory too: the run holds both at once
+  const double host_need = e.host_bytes + (dev.is_cpu ? e.device_bytes : 0);
+  if (host_available > 0 && host_need > static_cast<double>(host_available)) {
     const bool states = e.state_bytes * 3 > e.host_bytes / 2;
     detail::fail_at(plan.scene, states ? "ensemble.trajectories" : histogram_key(plan),
-                    "the run needs about " + mib(e.host_bytes) + " of memory in this process (" +
+                    "the run needs about " + mib(host_need) + " of memory in this process (" +
                         (states ? "state records of " + std::to_string(plan.scene.trajectories) + " trajectories"
                                 : std::string("the histograms")) +
+                        (dev.is_cpu ? ", with the buffers of " + where + ", which computes in this memory" : "") +
                         ") and " + mib(static_cast<double>(host_available)) +
                         " are available: choose a smaller value" +
                         (states ? " or leave observe.initial_states / observe.final_states out" : ""));

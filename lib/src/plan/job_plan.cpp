@@ -35,7 +35,9 @@ Job plan_job(const Scene& scene, const StepResolver& resolve, std::shared_ptr<co
     // the panel's overrides, then the user's (so --set applies to every panel)
     std::vector<std::string> sets = panel.sets;
     std::vector<std::string> labels;
-    for (const std::string& set : panel.sets) labels.push_back("[[panel]] " + panel.name + ": " + set);
+    for (std::size_t i = 0; i < panel.sets.size(); ++i)  // where it was written, for messages
+      labels.push_back((i < panel.set_origins.size() ? panel.set_origins[i] + ": " : std::string()) + "[[panel]] " +
+                       panel.name + ": " + panel.sets[i]);
     sets.insert(sets.end(), scene.overrides.begin(), scene.overrides.end());
     labels.insert(labels.end(), scene.override_labels.begin(), scene.override_labels.end());
     labels.resize(sets.size());

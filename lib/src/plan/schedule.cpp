@@ -4,6 +4,7 @@
 #include "plan/schedule.hpp"
 
 #include <string>
+#include <tuple>
 
 #include "aw_params.h"
 #include "plan/checks.hpp"
@@ -20,8 +21,13 @@ std::string fmt(double v) { return show_number(v); }
 void check_counts(const Scene& scene) {
   const double steps_wanted = scene.duration / scene.step;
   if (steps_wanted <= kMaxStepsPerTrajectory) return;
-  // blame the key given last (an override of the step, or of the duration)
-  const bool step_last = scene.pos("integrator.step").set_index > scene.pos("run.duration").set_index;
+  // blame the key given last: an override of one of them, else the one later
+  // in the file (a key left at its default is never given last)
+  const auto given = [&](const char* key) {
+    const SourcePos p = scene.pos(key);
+    return std::make_tuple(p.set_index, p.line, p.column);
+  };
+  const bool step_last = given("integrator.step") > given("run.duration");
   fail_at(scene, step_last ? "integrator.step" : "run.duration",
           "run.duration / integrator.step = " + fmt(scene.duration) + " T / " + fmt(scene.step) + " T = " +
               fmt(steps_wanted) + " steps per trajectory; at most " + fmt(kMaxStepsPerTrajectory) +

@@ -630,9 +630,11 @@ void analysis_keys(Rows& add) {
 }
 
 void output_keys(Rows& add) {
-  add("output.dir", "string", "non-empty path", "a non-empty string (a directory path)", text_of(&Scene::output_dir),
+  add("output.dir", "string", "non-empty path without NUL", "a non-empty string without NUL characters (a directory path)",
+      text_of(&Scene::output_dir),
       [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
-        r.text(key, n, s.output_dir, [](const std::string& d) { return !d.empty(); });
+        // a NUL would end the path where the system reads it ("x\u0000y" is "x")
+        r.text(key, n, s.output_dir, [](const std::string& d) { return !d.empty() && d.find('\0') == std::string::npos; });
       },
       "Directory the outputs are written to.");
   add("output.images", "boolean", "true or false", "true or false", bool_of(&Scene::images),

@@ -40,7 +40,11 @@ void read_panels(const toml::table& root, Problems& problems, Scene& s) {
         if (a)
           for (const toml::node& x : *a) {
             if (!x.is_string() || x.as_string()->get().find('=') == std::string::npos) good = false;
-            else panel.sets.push_back(x.as_string()->get());
+            else {
+              panel.sets.push_back(x.as_string()->get());
+              panel.set_origins.push_back(s.file + ":" + std::to_string(x.source().begin.line) + ":" +
+                                          std::to_string(x.source().begin.column));
+            }
           }
         if (!good) problems.at("panel.set", set->source(), "must be " + find_spec("panel.set")->must);
       }

@@ -4,14 +4,8 @@
 // first one (in file order, then the overrides in order) is thrown.
 #include "arnoldweb/scene.hpp"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
-
 #include "arnoldweb/errors.hpp"
+#include "os/regular_file.hpp"
 #include "scene/scene_internal.hpp"
 
 namespace arnoldweb {
@@ -71,52 +65,17 @@ Scene parse_scene(const std::string& text, const std::string& file,
   apply_overrides(root, overrides, origins, problems);
   check_structure(root, problems);
   read_values(root, origins, problems, scene);
+  // the file as written (parsed again: a copy of the tree loses the lines)
+  if (!overrides.empty()) check_replaced_values(toml::parse(text, scene.file), origins, problems);
   if (!problems.empty()) problems.throw_first();
   return scene;
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides,
                  const std::vector<std::string>& labels) {
-  using scene_detail::kMaxSceneBytes;
-  auto fail = [&](const std::string& what) {
-    throw SceneError(path, 0, 0, "", "cannot read the scene file: " + what);
-  };
-  if (path.empty()) fail("no file name given");
-  // O_NONBLOCK: opening a FIFO must not wait for a writer
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
-  if (fd < 0) fail(std::strerror(errno));
-  struct stat st {};
-  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-    ::close(fd);
-    fail(S_ISDIR(st.st_mode)    ? "it is a directory"
-         : S_ISFIFO(st.st_mode) ? "it is a pipe (FIFO), not a file"
-         : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "it is a device, not a file"
-                                                      : "it is not a regular file");
-  }
-  if (static_cast<std::uint64_t>(st.st_size) > kMaxSceneBytes) {
-    ::close(fd);
-    fail("it is " + std::to_string(st.st_size) + " bytes; scenes of at most " + std::to_string(kMaxSceneBytes) +
-         " bytes are read");
-  }
-  std::string text;
-  char buf[1 << 16];
-  while (true) {
-    const ssize_t n = ::read(fd, buf, sizeof buf);
-    if (n == 0) break;
-    if (n < 0) {
-      if (errno == EINTR || errno == EAGAIN) continue;
-      const int err = errno;
-      ::close(fd);
-      fail(std::strerror(err));
-    }
-    text.append(buf, static_cast<std::size_t>(n));
-    if (text.size() > kMaxSceneBytes) {  // it grew while being read
-      ::close(fd);
-      fail("it is larger than " + std::to_string(kMaxSceneBytes) + " bytes");
-    }
-  }
-  ::close(fd);
-  return parse_scene(text, path, overrides, labels);
+  const detail::RegularFile f = detail::read_regular_file(path, scene_detail::kMaxSceneBytes);
+  if (!f.why.empty()) throw SceneError(path, 0, 0, "", "cannot read the scene file: " + f.why);
+  return parse_scene(f.bytes, path, overrides, labels);
 }
 
 }  // namespace arnoldweb

@@ -122,6 +122,7 @@ class Problems {
   // At a node of the file, or at the override that gave `key`.
   void at(const std::string& key, const toml::source_region& where, std::string message);
   bool empty() const { return list_.empty(); }
+  const std::vector<Problem>& list() const { return list_; }
   [[noreturn]] void throw_first() const;
 
  private:
@@ -136,6 +137,11 @@ void check_structure(const toml::table& root, Problems& problems);
 // Parses and applies the overrides onto `root`; records bad ones.
 void apply_overrides(toml::table& root, const std::vector<std::string>& overrides,
                      Origins& origins, Problems& problems);
+// A wrong value in the file is an error whatever overrides it: reads the
+// file's own values (`file`, before the overrides) and records, at their
+// place in the file, the problems of the keys that the overrides replaced
+// (`applied`: the origins after apply_overrides).
+void check_replaced_values(const toml::table& file, const Origins& applied, Problems& problems);
 
 // Reads every known key of `root` into `scene` (and scene.where), row by row
 // of the key table; records wrong types and values.

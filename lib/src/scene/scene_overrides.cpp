@@ -131,6 +131,11 @@ void apply_overrides(toml::table& root, const std::vector<std::string>& override
       }
       continue;
     }
+    if (!spec->read) {  // the panel.* rows: a [[panel]] table is written in the file, whole
+      problem(key, "is a key of the [[panel]] tables; write it in a [[panel]] table of the scene file, "
+                   "an override cannot set it");
+      continue;
+    }
     const std::string value = trim(text.substr(eq + 1));
     if (spec->doc.type != "string") {  // read as TOML: the parser's limits apply
       try {
@@ -143,6 +148,16 @@ void apply_overrides(toml::table& root, const std::vector<std::string>& override
     const toml::table holder = value_of(value, *spec);
     set_path(root, split_dots(key), *holder.get("v"), index, origins);
   }
+}
+
+void check_replaced_values(const toml::table& file, const Origins& applied, Problems& problems) {
+  Origins file_only;
+  file_only.file = applied.file;
+  Problems found(file_only);
+  Scene scratch;
+  read_values(file, file_only, found, scratch);
+  for (const Problem& p : found.list())
+    if (applied.set_for(p.key) > 0) problems.add(p);
 }
 
 }  // namespace arnoldweb::scene_detail

@@ -11,6 +11,7 @@
 
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/states.hpp"
+#include "os/regular_file.hpp"
 #include "output/hdf5_handle.hpp"
 #include "states/state_rules.hpp"
 
@@ -22,7 +23,9 @@ class StateFile {
   explicit StateFile(const std::string& path) : path_(path) {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions, not prints
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) fail("", -1, "no such file (ensemble.file names an HDF5 file of states)");
+    if (!std::filesystem::exists(path, ec)) fail("", -1, "no such file (ensemble.file names an HDF5 file of states)");
+    // a FIFO, a device or a file of /proc is refused before HDF5 opens it (and blocks)
+    if (const std::string why = detail::plain_file_problem(path); !why.empty()) fail("", -1, why);
     if (H5Fis_hdf5(path.c_str()) <= 0) fail("", -1, "not an HDF5 file (docs/outputs.md, \"State files\")");
     file_.id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     if (file_.id < 0) fail("", -1, "cannot open it as an HDF5 file");

@@ -14,6 +14,7 @@
 #include "backends/backends.hpp"
 #include "backends/compute_device.hpp"
 #include "backends/kernel_sources.hpp"
+#include "os/quit_signal.hpp"
 
 namespace compute = boost::compute;
 
@@ -210,6 +211,7 @@ class OpenclDevice final : public ComputeDevice {
         rethrow(info_, "clCreateProgramWithSource", e);
       }
       try {
+        const detail::KeepQuitSignal keep;  // PoCL's LLVM may take SIGQUIT (os/quit_signal.hpp)
         program.build(options_);
       } catch (const compute::opencl_error& e) {
         std::string log;
