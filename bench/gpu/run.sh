@@ -99,14 +99,18 @@ fi
 if [ "$mode" = science ]; then
   CUDA0=$(first_cuda)
   nproc; grep -m1 "model name" /proc/cpuinfo; nvidia-smi --query-gpu=name,driver_version --format=csv,noheader
+  stamp "issue 25 and 26 measurements (bench/gpu/science.sh) on $CUDA0"
+  timeout 330 bash bench/gpu/science.sh build-gpu/arnoldweb "$CUDA0" "$OUT/science"
+  (cd "$OUT" && tar czf science.tgz science && rm -rf science)
+  if [ -f bench/gpu/rates.sh ] && [ -n "${AW_SCIENCE_RATES:-}" ]; then
+    stamp "issue 29's GPU rows (bench/gpu/rates.sh, one round)"
+    timeout 120 bash bench/gpu/rates.sh build-gpu/arnoldweb "$CUDA0" /tmp/aw-rates 1 | tee "$OUT/rates.txt"
+  fi
   stamp "GPU suites of issues 25 and 26 (open runs, frequencies) and the parity suites"
-  (cd build-gpu && ctest --output-on-failure --timeout 300 \
+  (cd build-gpu && ctest --output-on-failure --timeout 200 \
      -R "^(parity\.cuda|parity\.opencl|open-runs\.cuda|open-runs\.opencl|frequency-runs\.cuda|frequency-runs\.opencl|order\.cuda)$") \
      >"$OUT/ctest.txt" 2>&1
   grep -E "tests passed|Passed|Failed|\*\*\*" "$OUT/ctest.txt"
-  stamp "issue 25 and 26 measurements (bench/gpu/science.sh) on $CUDA0"
-  timeout 400 bash bench/gpu/science.sh build-gpu/arnoldweb "$CUDA0" "$OUT/science"
-  (cd "$OUT" && tar czf science.tgz science && rm -rf science)
   stamp "done"
   exit 0
 fi

@@ -11,7 +11,7 @@ from ._progress import make_progress
 from ._result import Result
 from ._scene import Scene
 
-__all__ = ["run", "accuracy", "check_states"]
+__all__ = ["run", "continue_run", "accuracy", "check_states"]
 
 SceneLike = Union[Scene, str, "os.PathLike[str]"]
 
@@ -77,6 +77,53 @@ def run(scene: SceneLike, device: Optional[str] = None,
         stop.result = result
         raise stop
     return result
+
+
+def continue_run(out_dir: "str | os.PathLike[str]", duration: float, device: Optional[str] = None,
+                 progress: "bool | Callable[[int, int, float], None] | None" = None,
+                 out: "str | os.PathLike[str] | None" = None, force: bool = False,
+                 sets: "dict | None" = None) -> Result:
+    """Goes on from where a finished run ended, as ``arnoldweb continue OUT_DIR --for DURATION``:
+    the run's scene as it ran (summary.json's ``scene_toml``), its trajectories started from the
+    final states, windings and time of its ``states.h5`` (checked against the size and digest
+    summary.json records: OutputError otherwise), for ``duration`` more T. A run of 2T is bit for
+    bit a run of T continued for T (the final states, and the map of the second window).
+
+    ``sets``: further keys, as ``{"observe.fli": True}`` (those of the outputs; a key that changes
+    the trajectories makes another run). ``device``, ``progress``, ``out`` and ``force`` as in
+    :func:`run`: with ``out`` None nothing is written. Raises OutputError (no summary.json, no
+    final states, a damaged states.h5), SceneError, DeviceError, StateError."""
+    from ._errors import OutputError
+    from ._saved import _checked
+
+    folder = os.path.abspath(os.fspath(out_dir))
+    summary_path = os.path.join(folder, "summary.json")
+    import json
+
+    try:
+        summary = json.loads(_core._read_saved_file(folder, "summary.json"))
+    except OutputError:
+        raise
+    except ValueError as e:
+        raise OutputError(f"{summary_path}: not a summary of arnoldweb ({e})", path=summary_path) from None
+    text = summary.get("scene_toml") if isinstance(summary, dict) else None
+    if not isinstance(text, str):
+        raise OutputError(f"{summary_path}: has no scene_toml: not a summary of an arnoldweb run", path=summary_path)
+    states = os.path.join(folder, "states.h5")
+    if not os.path.exists(states):
+        raise OutputError(f"{states}: the run kept no final states to continue from: run it with "
+                          "observe.final_states = true", path=states)
+    _checked(states)  # its size and digest, as summary.json records them
+    if not (isinstance(duration, (int, float)) and duration > 0 and duration != float("inf")):
+        raise ValueError(f"duration must be a time in T greater than 0, not {duration!r}")
+    s = Scene.from_toml(text, name=summary_path)
+    label = f"continue_run({os.fspath(out_dir)!r})"
+    s._apply('ensemble.initial="file"', label)
+    s._apply(f"ensemble.file={_quote(states)}", label)
+    s._apply(f"run.duration={float(duration)!r}", f"duration={duration!r}")
+    for key, value in (sets or {}).items():
+        s = s.set(key, value)
+    return run(s, device=device, progress=progress, out=out, force=force)
 
 
 def _pair(initial) -> tuple:

@@ -238,3 +238,26 @@ def test_frequencies_and_diffusion_from_python(repo, tmp_path):
     back = aw.load(tmp_path / "fm")
     assert back.analyses == json.loads(json.dumps(r.analyses))
     assert back.digests["frequencies"] == r.digests["frequencies"]
+
+
+def test_continue_run_is_one_longer_run(small_scene, tmp_path):
+    """aw.continue_run(out, T): a run of 2T is bit for bit a run of T continued for T (the final
+    states and windings, the map of the second window, the time), as `arnoldweb continue`."""
+    small_scene.set("observe.final_states", True).set("ensemble.trajectories", 1000)
+    whole = aw.run(small_scene.copy().set("run.duration", 10.0))
+    first = aw.run(small_scene, out=tmp_path / "first")
+    rest = aw.continue_run(tmp_path / "first", 5.0)
+    a, b = whole.states["final"], rest.states["final"]
+    for name in ("position_turns", "winding", "momentum", "status"):
+        assert np.array_equal(a[name], b[name]), name
+    # the map counts one velocity per window: the 2T run's is the first window's plus the second's
+    assert np.array_equal(whole.map, first.map + rest.map)
+    assert rest.summary["time"]["start"] == 5.0 and rest.summary["time"]["end"] == 10.0
+    with pytest.raises(ValueError):
+        aw.continue_run(tmp_path / "first", -1.0)
+    aw.run(small_scene.copy().set("observe.final_states", False), out=tmp_path / "nostates")
+    with pytest.raises(aw.OutputError, match="final states"):
+        aw.continue_run(tmp_path / "nostates", 5.0)
+    (tmp_path / "first" / "states.h5").write_bytes(b"changed")
+    with pytest.raises(aw.OutputError, match="states.h5"):
+        aw.continue_run(tmp_path / "first", 5.0)

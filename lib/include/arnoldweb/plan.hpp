@@ -15,6 +15,8 @@
 
 namespace arnoldweb {
 
+struct DeviceInfo;  // arnoldweb/device.hpp
+
 namespace detail {
 struct KernelParams;
 struct ModelDescriptor;
@@ -127,6 +129,10 @@ MemoryEstimate estimate_memory(const Plan& plan);
 
 // The largest launch the runner makes for this plan (trajectories).
 std::uint64_t largest_chunk(const Plan& plan);
+// The same for one device: a GPU with memory to spare takes larger launches of the
+// frequency analysis' series (a quarter of its memory, at most its largest buffer), so that
+// a launch fills it; a CPU device keeps largest_chunk(plan).
+std::uint64_t largest_chunk(const Plan& plan, const DeviceInfo& device);
 
 struct DeviceInfo;
 // Refuses, before anything is computed, a plan that does not fit the device

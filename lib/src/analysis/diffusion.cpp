@@ -120,18 +120,22 @@ struct SplitMix {
 // times), each trajectory counted `count` times (sum of counts = used).
 std::vector<double> weighted_variance(const std::vector<double>& q, const std::vector<std::uint32_t>& count,
                                       std::size_t used, std::size_t times, std::size_t first, std::size_t last) {
-  std::vector<double> var(times, 0.0);
-  for (std::size_t k = first; k <= last; ++k) {
-    double m1 = 0, m2 = 0;
-    for (std::size_t u = 0; u < used; ++u) {
-      if (!count[u]) continue;
-      const double x = q[u * times + k];
-      m1 += count[u] * x;
-      m2 += count[u] * x * x;
+  // trajectory by trajectory (q's rows are contiguous); each time's sums still add the
+  // trajectories in order, so the bits are those of a loop over times outside
+  std::vector<double> m1(times, 0.0), m2(times, 0.0), var(times, 0.0);
+  for (std::size_t u = 0; u < used; ++u) {
+    if (!count[u]) continue;
+    const double c = count[u];
+    const double* row = &q[u * times];
+    for (std::size_t k = first; k <= last; ++k) {
+      const double x = row[k];
+      m1[k] += c * x;
+      m2[k] += c * x * x;
     }
-    m1 /= static_cast<double>(used);
-    m2 /= static_cast<double>(used);
-    var[k] = m2 - m1 * m1;
+  }
+  for (std::size_t k = first; k <= last; ++k) {
+    const double a = m1[k] / static_cast<double>(used), b = m2[k] / static_cast<double>(used);
+    var[k] = b - a * a;
   }
   return var;
 }
@@ -254,14 +258,21 @@ DiffusionFit fit_diffusion(const ActionSamples& s, const std::vector<double>& di
   fit.slope_first_half = (mid > first) ? slope_of(s.t, var, first, mid) : fit.slope;
   fit.slope_second_half = (last > mid) ? slope_of(s.t, var, mid, last) : fit.slope;
   if (o.replicates > 0) {
-    SplitMix rng{o.seed};
-    std::vector<double> ds;
-    ds.reserve(static_cast<std::size_t>(o.replicates));
-    std::vector<std::uint32_t> count(n);
-    for (int r = 0; r < o.replicates; ++r) {
-      std::fill(count.begin(), count.end(), 0u);
-      for (std::size_t j = 0; j < n; ++j) ++count[rng.below(n)];
-      ds.push_back(slope_of(s.t, weighted_variance(q, count, n, times, first, last), first, last) / 2);
+    // replicate r draws from its own stream (seed, r): the replicates run in parallel and
+    // give the same bits whatever the number of threads
+    std::vector<double> ds(static_cast<std::size_t>(o.replicates));
+#pragma omp parallel
+    {
+      std::vector<std::uint32_t> count(n);
+#pragma omp for schedule(dynamic)
+      for (int r = 0; r < o.replicates; ++r) {
+        SplitMix seeder{o.seed + static_cast<std::uint64_t>(r)};
+        SplitMix rng{seeder.next()};
+        std::fill(count.begin(), count.end(), 0u);
+        for (std::size_t j = 0; j < n; ++j) ++count[rng.below(n)];
+        ds[static_cast<std::size_t>(r)] =
+            slope_of(s.t, weighted_variance(q, count, n, times, first, last), first, last) / 2;
+      }
     }
     double m = 0;
     for (double x : ds) m += x;

@@ -39,7 +39,7 @@ class H5Writer {
 
   hid_t group(const char* name) { return keep(check(H5Gcreate2(file_, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), name)); }
 
-  // A dataset of `dims`, chunked and deflated when large.
+  // A dataset of `dims`, chunked, shuffled and deflated when large.
   hid_t dataset(hid_t where, const char* name, hid_t type, const std::vector<hsize_t>& dims, const void* data) {
     hid_t space = keep(check(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), name));
     hid_t props = keep(check(H5Pcreate(H5P_DATASET_CREATE), name));
@@ -49,7 +49,10 @@ class H5Writer {
       std::vector<hsize_t> chunk = dims;
       chunk[0] = std::min<hsize_t>(dims[0], std::max<hsize_t>(1, 65536 / std::max<hsize_t>(1, total / dims[0])));
       check(H5Pset_chunk(props, static_cast<int>(chunk.size()), chunk.data()), name);
-      check(H5Pset_deflate(props, 4), name);
+      // byte shuffle, then deflate at level 1: for doubles (states, actions) about the ratio of
+      // level 4 without shuffle at a fraction of its time (diffusion.h5 of 131,044 x 101 actions)
+      check(H5Pset_shuffle(props), name);
+      check(H5Pset_deflate(props, 1), name);
     }
     hid_t set = keep(check(H5Dcreate2(where, name, type, space, H5P_DEFAULT, props, H5P_DEFAULT), name));
     if (total) check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), name);

@@ -61,6 +61,19 @@ std::uint64_t largest_chunk(const Plan& plan) {
   return std::max<std::uint64_t>(1, std::min(m, plan.scene.trajectories));
 }
 
+std::uint64_t largest_chunk(const Plan& plan, const DeviceInfo& device) {
+  const std::uint64_t m = largest_chunk(plan);
+  const double series = series_bytes(plan, 8);
+  if (series <= 0 || device.is_cpu || plan.scene.chunk || device.memory == 0) return m;
+  double room = static_cast<double>(device.memory) / 4;
+  if (device.max_allocation) room = std::min(room, static_cast<double>(device.max_allocation));
+  if (room <= kMaxSeriesBytes) return m;
+  std::uint64_t larger = std::min<std::uint64_t>(has_states(plan) ? kMaxChunkStates : kMaxChunk,
+                                                 static_cast<std::uint64_t>(room / series));
+  larger = std::min<std::uint64_t>(larger, 4000000000ull / static_cast<std::uint64_t>(std::max<std::int64_t>(plan.windows, 1)));
+  return std::max<std::uint64_t>(1, std::min(std::max(m, larger), plan.scene.trajectories));
+}
+
 MemoryEstimate estimate_memory(const Plan& plan) {
   MemoryEstimate e;
   e.max_chunk = largest_chunk(plan);

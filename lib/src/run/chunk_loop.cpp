@@ -41,7 +41,7 @@ IndexRange take_range(std::vector<IndexRange>& pending, std::uint64_t want, std:
 }
 
 void drive_device(const Plan& plan, Backend& backend, WorkQueue& queue, const RunOptions& options) {
-  const std::uint64_t max_chunk = largest_chunk(plan);
+  const std::uint64_t max_chunk = largest_chunk(plan, backend.info());
   backend.prepare(plan, max_chunk);
   const std::uint64_t granule = chunk_granule(plan, max_chunk);
   // A launch below one wave of the device takes as long as a full wave (each
