@@ -88,6 +88,9 @@ if [ "$mode" = fgl ]; then
   stamp "fgl rates (issue 26 sizing)"
   CUDA0=$(first_cuda)
   timeout 560 bash bench/gpu/fgl_rate.sh build-gpu/arnoldweb "$CUDA0" | tee "$OUT/fgl_rate.txt"
+  stamp "done"
+  exit 0
+fi
 if [ "$mode" = multi ]; then
   stamp "every GPU in one process: Figure 3 (a), one GPU against ${AW_MULTI_DEVICES:-every CUDA device}"
   nproc; grep -m1 "model name" /proc/cpuinfo
