@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Digests of every ready scene (scaled down), of every model and of the
 # effects, on the given devices: the proof that a refactoring changed no bits.
+# The cases on the default scene's physics use scenes/default_paper.toml (Yoshida-6 at
+# 0.02 T, the default scene until 2026-11-26); "sbab3c" is scenes/default.toml itself.
 # Prints one line per case and device: map, initial-states, final-states and
 # indicator digests, max |dE|, binned count.
 #   bench/digests/digests.sh [BIN] [DEVICES...]   (default: build/arnoldweb cpu opencl:0)
@@ -15,17 +17,20 @@ small=(--set observe.initial_states=true --set observe.final_states=true --set o
 n3000=";--set;ensemble.trajectories=3000"
 # each case: name|scene|extra arguments separated by ';'
 cases=(
-  "default|scenes/default.toml|;--set;run.average=5;--set;run.duration=10$n3000"
+  "default|scenes/default_paper.toml|;--set;run.average=5;--set;run.duration=10$n3000"
   "fig2|scenes/fig2_e400.toml|;--set;run.average=2;--set;run.duration=2;--set;observe.energy_error.every=1$n3000"
   "fig3|scenes/fig3_e15.toml|;--set;run.average=2;--set;run.duration=2;--set;observe.energy_error.every=1$n3000"
   "fig4|scenes/fig4_diffusion.toml|;--set;run.duration=40;--set;observe.frames.times=[0,10,20,40]$n3000"
-  "float|scenes/default.toml|;--set;integrator.precision=float;--set;run.average=5;--set;run.duration=5$n3000"
-  "box-pefrl|scenes/default.toml|;--set;ensemble.initial=box;--set;integrator.method=pefrl;--set;run.average=4;--set;run.duration=4;--set;observe.energy_error.every=2;--set;observe.max_energy_error=1e-5$n3000"
-  "cap-zoom-confine|scenes/default.toml|;--set;ensemble.initial=cap;--set;observe.zoom.width=20;--set;observe.confine.width=30;--set;run.average=2;--set;run.duration=4;--set;observe.energy_error.every=1$n3000"
+  "float|scenes/default_paper.toml|;--set;integrator.precision=float;--set;run.average=5;--set;run.duration=5$n3000"
+  "box-pefrl|scenes/default_paper.toml|;--set;ensemble.initial=box;--set;integrator.method=pefrl;--set;run.average=4;--set;run.duration=4;--set;observe.energy_error.every=2;--set;observe.max_energy_error=1e-5$n3000"
+  "cap-zoom-confine|scenes/default_paper.toml|;--set;ensemble.initial=cap;--set;observe.zoom.width=20;--set;observe.confine.width=30;--set;run.average=2;--set;run.duration=4;--set;observe.energy_error.every=1$n3000"
   "fgl|scenes/fgl_eps0.01.toml|;--set;run.average=20;--set;run.duration=20$n3000"
-  "fourier|scenes/default.toml|;--set;model.kind=fourier;--set;run.average=5;--set;run.duration=5$n3000"
-  "expression|scenes/default.toml|;--set;model.kind=expression;--set;model.potential=\"cos(x)*cos(y)*(1 + cos(2*z))\";--set;run.average=5;--set;run.duration=5$n3000"
-  "gradient|scenes/default.toml|;--set;integrator.method=saba4c;--set;run.average=5;--set;run.duration=5$n3000"
+  "fourier|scenes/default_paper.toml|;--set;model.kind=fourier;--set;run.average=5;--set;run.duration=5$n3000"
+  "expression|scenes/default_paper.toml|;--set;model.kind=expression;--set;model.potential=\"cos(x)*cos(y)*(1 + cos(2*z))\";--set;run.average=5;--set;run.duration=5$n3000"
+  "gradient|scenes/default_paper.toml|;--set;integrator.method=saba4c;--set;run.average=5;--set;run.duration=5$n3000"
+  "sbab3c|scenes/default.toml|;--set;run.average=5;--set;run.duration=10$n3000"
+  "chin4a-fourier|scenes/default_paper.toml|;--set;model.kind=fourier;--set;integrator.method=chin4a;--set;run.average=5;--set;run.duration=5$n3000"
+  "sbab3c-expression|scenes/default.toml|;--set;model.kind=expression;--set;model.potential=\"cos(x)*cos(y)*(1 + cos(2*z))\";--set;run.average=5;--set;run.duration=5$n3000"
   "fli-grid|scenes/fli_e15.toml|;--set;ensemble.grid.nside=8;--set;run.duration=20;--set;run.average=20"
   "fli-fgl|scenes/fli_fgl.toml|;--set;ensemble.grid.resolution=[24,24];--set;run.duration=100;--set;run.average=100"
 )

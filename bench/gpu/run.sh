@@ -35,6 +35,10 @@
 # multi: build the program, then bench/gpu/multi_gpu.sh: Figure 3 panel (a) on one GPU and on every
 # CUDA device driven by one process (--device cuda:0,cuda:1, then --device all), timed as whole
 # processes, with the ratio and the digests (issue 25 item 4; docs/cluster.md). Run it on nvidia-h200-x2.
+# rates: build the program, then bench/gpu/rates.sh on the first CUDA device: Figure 3 panel (a)
+# (1e8 x 5000 steps, Yoshida-6A, double; trajectory-steps/s) and Figure 4's schedule at N = 32,768,
+# the GPU rows of issue 29, each kernel variant of AW_RATES_VARIANTS (name=NVRTC options, ';'
+# between; default: the default kernel only) in turn, AW_RATES_REPEAT rounds (default 2).
 # Needs .device-deps/ (see docs/gpu.md): Debian packages the image lacks and
 # ../shared/gpu/device-setup.sh. Results go to $OUT (default ./gpu-out).
 set -uo pipefail
@@ -62,7 +66,8 @@ fi
 stamp "build"
 targets=""
 [ "$mode" = bench ] && targets="--target arnoldweb-cli arnoldweb_bench"
-[ "$mode" = accuracy ] || [ "$mode" = float ] || [ "$mode" = fgl ] || [ "$mode" = multi ] && targets="--target arnoldweb-cli"
+[ "$mode" = accuracy ] || [ "$mode" = float ] || [ "$mode" = fgl ] || [ "$mode" = multi ] || [ "$mode" = rates ] &&
+  targets="--target arnoldweb-cli"
 [ "$mode" = science ] && targets="--target arnoldweb-cli arnoldweb_tests"
 if ! cmake --build build-gpu -j"$(nproc)" $targets >>"$OUT/build.txt" 2>&1; then
   grep -E "error|Error" -A4 "$OUT/build.txt" | head -60; exit 1
@@ -108,9 +113,17 @@ if [ "$mode" = science ]; then
   fi
   stamp "GPU suites of issues 25 and 26 (open runs, frequencies) and the parity suites"
   (cd build-gpu && ctest --output-on-failure --timeout 200 \
-     -R "^(parity\.cuda|parity\.opencl|open-runs\.cuda|open-runs\.opencl|frequency-runs\.cuda|frequency-runs\.opencl|order\.cuda)$") \
+     -R "${AW_SCIENCE_TESTS:-^(parity\.cuda|parity\.opencl|open-runs\.cuda|open-runs\.opencl|frequency-runs\.cuda|frequency-runs\.opencl|order\.cuda)$}") \
      >"$OUT/ctest.txt" 2>&1
   grep -E "tests passed|Passed|Failed|\*\*\*" "$OUT/ctest.txt"
+  stamp "done"
+  exit 0
+fi
+if [ "$mode" = rates ]; then
+  stamp "issue 29's GPU rows: Figure 3 (a) and Figure 4's schedule at N = 32,768 (variants: ${AW_RATES_VARIANTS:-default=})"
+  CUDA0=$(first_cuda)
+  nproc; grep -m1 "model name" /proc/cpuinfo; nvidia-smi --query-gpu=name,driver_version,clocks.max.sm --format=csv,noheader
+  timeout 560 bash bench/gpu/rates.sh build-gpu/arnoldweb "$CUDA0" /tmp/aw-rates "${AW_RATES_REPEAT:-2}" | tee "$OUT/rates.txt"
   stamp "done"
   exit 0
 fi

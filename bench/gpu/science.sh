@@ -36,6 +36,10 @@ print(f"{sys.argv[2]:28s} process {float(sys.argv[4]) - float(sys.argv[3]):8.2f}
 PY
 }
 
+parts=" ${AW_SCIENCE_PARTS:-1 2 3} "
+part() { [[ "$parts" == *" $1 "* ]]; }
+
+if part 1; then
 echo "== 1. the cost of observe.frequencies on $DEV"
 scene=scenes/default_paper.toml
 [ -f "$scene" ] || scene=scenes/default.toml
@@ -43,9 +47,12 @@ freq=(--set "observe.frequencies={ samples = 512, every = 0.04 }")
 # warm the kernel caches first, so that no timed run compiles
 run warm_map "$tmp/w1" "$scene" --set ensemble.trajectories=65536 --set output.images=false >/dev/null
 run warm_freq "$tmp/w2" "$scene" --set ensemble.trajectories=65536 --set output.images=false "${freq[@]}" >/dev/null
+freq256=(--set "observe.frequencies={ samples = 256, every = 0.08 }")
+run warm_freq256 "$tmp/w3" "$scene" --set ensemble.trajectories=65536 --set output.images=false "${freq256[@]}" >/dev/null
 for rep in 1 2; do
   run "default_map_$rep" "$tmp/d1" "$scene" --set output.images=false
   run "default_map_freq_$rep" "$tmp/d2" "$scene" --set output.images=false "${freq[@]}"
+  run "default_map_freq256_$rep" "$tmp/d3" "$scene" --set output.images=false "${freq256[@]}"
 done
 run fgl_fli_only "$tmp/f1" scenes/fgl_frequency_map.toml --set observe.frequencies=false --set output.images=false
 run fgl_fli_freq "$tmp/f2" scenes/fgl_frequency_map.toml
@@ -54,7 +61,9 @@ for f in frequency_map.png diffusion_index.png fli.png; do
   [ -f "$tmp/f2/$f" ] && cp "$tmp/f2/$f" "$OUTDIR/gallery/fgl_0.01_$f"
 done
 ls "$tmp/f2" >"$OUTDIR/gallery/fgl_files.txt"
+fi
 
+if part 2; then
 echo "== 2. the D(eps) scan (scenes/fgl_diffusion.toml, ${AW_DSCAN_T:=100000} T per eps)"
 T=$AW_DSCAN_T
 every=$(python3 -c "print($T / 100)")
@@ -64,10 +73,12 @@ for eps in ${AW_DSCAN_EPS:-0.006 0.008 0.010 0.012 0.015 0.020}; do
   run "dscan_$eps" "$o" scenes/fgl_diffusion.toml --set model.epsilon="$eps" --set run.duration="$T" \
     --set run.average="$T" --set observe.diffusion.every="$every" --set observe.diffusion.fit_from="$fit" \
     --set observe.energy_error.every="$every" --set observe.final_states=false &&
-    for f in diffusion.csv diffusion.png; do cp "$o/$f" "$OUTDIR/dscan_$eps/"; done
+    for f in diffusion.csv diffusion.png; do [ -f "$o/$f" ] && cp "$o/$f" "$OUTDIR/dscan_$eps/"; done
   rm -rf "$o"
 done
+fi
 
+if part 3; then
 echo "== 3. a sliced long run, in one piece and killed with kill -9 and resumed (${AW_FIG4_T:=20480} T)"
 sl=(scenes/fig4_diffusion.toml --set ensemble.trajectories=32768 --set run.duration="$AW_FIG4_T"
     --set "observe.frames.times=[0.0, 10.0, 160.0, 2560.0, $AW_FIG4_T]" --set run.slice=1280
@@ -101,3 +112,4 @@ print("digests of the plain run:  ", json.dumps(da, sort_keys=True))
 print("digests of the killed run: ", json.dumps(db, sort_keys=True))
 print("fig4 sliced, killed and resumed: digests", "IDENTICAL" if da == db and da else "DIFFER")
 PY
+fi

@@ -5,11 +5,12 @@
 # projected time of the paper's full length (3.2e4 trajectories to 1e7 T).
 #   bash bench/gpu/small_n.sh ARNOLDWEB DURATION_T DEVICE...   (DURATION_T: a multiple of 10 T)
 # Prints one line per (device, N): seconds, trajectory-steps/s, steps/s per trajectory.
+# AW_SMALL_N_SIZES (default "32768 131072 1048576"): the N measured.
 set -uo pipefail
 aw=$1 duration=$2
 shift 2
 for dev in "$@"; do
-  for n in 32768 131072 1048576; do
+  for n in ${AW_SMALL_N_SIZES:-32768 131072 1048576}; do
     out=$(mktemp -d)/run
     if "$aw" run scenes/fig4_diffusion.toml --quiet --device "$dev" --out "$out" \
          --set ensemble.trajectories=$n --set run.duration="$duration" \

@@ -19,6 +19,12 @@ time to reach max |dE| (over the ensemble and the samples) <= 1e-6, 1e-8, 1e-10,
    time of the propagation (the integrators are compiled before the clock starts, and the
    compile time is printed apart). Per target the fastest tolerance that meets it.
 
+--focus: one target (--target, default 1e-8), the two configurations that meet it (--aw-runs for
+arnoldweb, METHOD:n for h = T/n, the first that meets the target counts; --hk-tols for heyoka),
+timed --repeat times in turn (arnoldweb, heyoka, arnoldweb, ...): arnoldweb as a WHOLE PROCESS
+(wall clock around the child, and its CPU time from the OS), heyoka's integration (the
+propagation's wall and CPU time, compiled beforehand); medians and the ratio (issue 29).
+
 heyoka.py is installed on demand from PyPI into a virtual environment (--venv, default
 build/heyoka-venv) with numpy and h5py; nothing of it is needed by the build or the tests.
 The script re-runs itself inside that environment.
@@ -75,16 +81,19 @@ def scene_sets(a, extra):
     return out
 
 
-def arnoldweb_run(a, out, extra):
+def arnoldweb_run(a, out, extra, scene=os.path.join(ROOT, "scenes", "default.toml")):
     import resource
-    cmd = [a.arnoldweb, "run", os.path.join(ROOT, "scenes", "default.toml"), "--device", "cpu", "-q", "-f", "-o", out]
+    cmd = [a.arnoldweb, "run", scene, "--device", "cpu", "-q", "-f", "-o", out]
     r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    t0 = time.perf_counter()
     subprocess.check_call(cmd + scene_sets(a, extra))
+    wall = time.perf_counter() - t0
     r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
     with open(os.path.join(out, "summary.json")) as f:
         s = json.load(f)
     # core-seconds of the whole process (start, scene, run, summary): an upper bound of the run's
     s["cpu_seconds"] = (r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime)
+    s["process_seconds"] = wall  # the whole process, start to exit
     return s
 
 
@@ -115,65 +124,142 @@ def arnoldweb_ladder(a, work):
     return rows
 
 
-def heyoka_ladder(a, states):
-    import threading
-    import heyoka as hy
+def energy(q, p):
     import numpy as np
+    return 0.5 * np.sum(p * p, axis=-1) + np.cos(q[..., 0]) * np.cos(q[..., 1]) * (1 + np.cos(2 * q[..., 2]))
 
-    x, y, z, px, py, pz = hy.make_vars("x", "y", "z", "px", "py", "pz")
-    V = hy.cos(x) * hy.cos(y) * (1.0 + hy.cos(2.0 * z))
-    sys_ = [(x, px), (y, py), (z, pz), (px, -hy.diff(V, x)), (py, -hy.diff(V, y)), (pz, -hy.diff(V, z))]
+
+def heyoka_problem(a, states):
+    """The ensemble in heyoka's terms: positions in radians, padded to whole batches (the last
+    state repeated), the sample grid per batch lane, the initial energies."""
+    import types
+    import numpy as np
     q0 = states[:, :3] * 2 * np.pi
     p0 = states[:, 3:]
     n = len(states)
-    batch = a.batch
-    nb = (n + batch - 1) // batch
-    pad = nb * batch - n
+    nb = (n + a.batch - 1) // a.batch
+    pad = nb * a.batch - n
     q0p = np.vstack([q0, np.repeat(q0[-1:], pad, axis=0)])
     p0p = np.vstack([p0, np.repeat(p0[-1:], pad, axis=0)])
     grid = np.arange(21) * np.pi  # every 0.5 T over 10 T (T = 2 pi)
-    gridb = np.repeat(grid, batch).reshape(-1, batch)
+    return types.SimpleNamespace(n=n, batches=nb, q0=q0p, p0=p0p, e0=energy(q0p, p0p),
+                                 grid=np.repeat(grid, a.batch).reshape(-1, a.batch))
 
-    def energy(q, p):
-        return 0.5 * np.sum(p * p, axis=-1) + np.cos(q[..., 0]) * np.cos(q[..., 1]) * (1 + np.cos(2 * q[..., 2]))
 
-    e0 = energy(q0p, p0p)
+def heyoka_integrators(a, tol):
+    """One compiled batch integrator per thread, and the seconds the compilation took."""
+    import heyoka as hy
+    import numpy as np
+    x, y, z, px, py, pz = hy.make_vars("x", "y", "z", "px", "py", "pz")
+    V = hy.cos(x) * hy.cos(y) * (1.0 + hy.cos(2.0 * z))
+    sys_ = [(x, px), (y, py), (z, pz), (px, -hy.diff(V, x)), (py, -hy.diff(V, y)), (pz, -hy.diff(V, z))]
+    t0 = time.time()
+    tas = [hy.taylor_adaptive_batch(sys_, np.zeros((6, a.batch)), tol=tol) for _ in range(a.threads)]
+    return tas, time.time() - t0
+
+
+def heyoka_propagate(a, tas, pb):
+    """The whole ensemble over the grid, each thread a contiguous share of the batches (heyoka
+    releases the GIL in propagate_grid): wall and CPU time of the propagation, max |dE|."""
+    import threading
+    import numpy as np
+    batch = a.batch
+    de = np.zeros(pb.batches * batch)
+    bounds = np.linspace(0, pb.batches, a.threads + 1).astype(int)
+
+    def work(k):
+        ta = tas[k]
+        for b in range(bounds[k], bounds[k + 1]):
+            sl = slice(b * batch, (b + 1) * batch)
+            ta.set_time(0.0)
+            ta.state[:3] = pb.q0[sl].T
+            ta.state[3:] = pb.p0[sl].T
+            out = ta.propagate_grid(pb.grid)[-1]  # (len(grid), 6, batch)
+            e = energy(np.moveaxis(out[:, :3, :], 1, 2), np.moveaxis(out[:, 3:, :], 1, 2))
+            de[sl] = np.max(np.abs(e - pb.e0[sl]), axis=0)
+
+    t0 = time.time()
+    c0 = time.process_time()
+    threads = [threading.Thread(target=work, args=(k,)) for k in range(a.threads)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    return {"order": tas[0].order, "max_dE": float(np.max(de[:pb.n])), "seconds": time.time() - t0,
+            "cpu_seconds": time.process_time() - c0}
+
+
+def heyoka_ladder(a, states):
+    pb = heyoka_problem(a, states)
     rows = []
     for tol in a.tolerances:
-        t0 = time.time()
-        tas = [hy.taylor_adaptive_batch(sys_, np.zeros((6, batch)), tol=tol) for _ in range(a.threads)]
-        compile_s = time.time() - t0
-        de = np.zeros(nb * batch)
-        bounds = np.linspace(0, nb, a.threads + 1).astype(int)
-
-        def work(k):
-            ta = tas[k]
-            for b in range(bounds[k], bounds[k + 1]):
-                sl = slice(b * batch, (b + 1) * batch)
-                ta.set_time(0.0)
-                ta.state[:3] = q0p[sl].T
-                ta.state[3:] = p0p[sl].T
-                res = ta.propagate_grid(gridb)
-                out = res[-1]  # (len(grid), 6, batch)
-                e = energy(np.moveaxis(out[:, :3, :], 1, 2), np.moveaxis(out[:, 3:, :], 1, 2))
-                de[sl] = np.max(np.abs(e - e0[sl]), axis=0)
-
-        t0 = time.time()
-        c0 = time.process_time()
-        threads = [threading.Thread(target=work, args=(k,)) for k in range(a.threads)]
-        for t in threads:
-            t.start()
-        for t in threads:
-            t.join()
-        wall = time.time() - t0
-        cpu = time.process_time() - c0
-        order = tas[0].order
-        m = float(np.max(de[:n]))
-        rows.append({"tol": tol, "order": order, "max_dE": m, "seconds": wall, "cpu_seconds": cpu,
-                     "compile_seconds": compile_s})
-        print(f"  heyoka tol {tol:.0e} (order {order}) max|dE| {m:.2e}  {wall:.3f} s (cpu {cpu:.2f} s, "
-              f"compile {compile_s:.1f} s)", file=sys.stderr, flush=True)
+        tas, compile_s = heyoka_integrators(a, tol)
+        row = heyoka_propagate(a, tas, pb)
+        row.update({"tol": tol, "compile_seconds": compile_s})
+        rows.append(row)
+        print(f"  heyoka tol {tol:.0e} (order {row['order']}) max|dE| {row['max_dE']:.2e}  {row['seconds']:.3f} s "
+              f"(cpu {row['cpu_seconds']:.2f} s, compile {compile_s:.1f} s)", file=sys.stderr, flush=True)
     return rows
+
+
+def focus(a, states):
+    """--focus: each configuration of each side timed a.repeat times, in turn, and the ratio at the
+    target of the cheapest of each side that meets it (medians; pairs taken in the same round)."""
+    import statistics
+    pb = heyoka_problem(a, states)
+    hk = {}
+    for tol in [float(t) for t in a.hk_tols.split(",")]:
+        tas, compile_s = heyoka_integrators(a, tol)
+        hk[tol] = {"tas": tas, "compile_seconds": compile_s, "rows": []}
+    aw = {c: [] for c in a.aw_runs.split(",")}
+    # "auto" chooses the method too where the scene names none: the default scene without its method
+    unnamed = os.path.join(a.work, "no_method.toml")
+    with open(os.path.join(ROOT, "scenes", "default.toml")) as f, open(unnamed, "w") as g:
+        g.writelines(line for line in f if not line.startswith("method"))
+
+    def aw_sets(c):
+        if c == "auto":  # the method and step integrator.step = "auto" chooses for the target
+            return ["integrator.step=\"auto\"", f"integrator.tolerance={a.target!r}"]
+        method, n = c.split(":")
+        return [f"integrator.method=\"{method}\"", f"integrator.step={1 / int(n)!r}"]
+
+    for r in range(a.repeat):
+        for c, rows in aw.items():
+            s = arnoldweb_run(a, os.path.join(a.work, "aw"), aw_sets(c), unnamed)
+            rows.append({"max_dE": s["energy_error"]["max"], "seconds": s["process_seconds"],
+                         "cpu_seconds": s["cpu_seconds"], "run_seconds": s["wall_seconds"],
+                         "method": s["method"]["name"], "step": s["scene"]["integrator"]["step"]})
+        for tol, h in hk.items():
+            h["rows"].append(heyoka_propagate(a, h["tas"], pb))
+    med = lambda rows, k: statistics.median(x[k] for x in rows)
+    print(f"\nmax|dE| <= {a.target:g}: {a.repeat} rounds, medians (min-max); arnoldweb: whole process "
+          f"(start to exit), heyoka.py: the propagation (compiled before)")
+    print("| side | configuration | max abs(dE) | wall s | core-s | meets |")
+    print("|---|---|---|---|---|---|")
+    spread = lambda rows, k: f"{med(rows, k):.3f} ({min(x[k] for x in rows):.3f}-{max(x[k] for x in rows):.3f})"
+    for c, rows in aw.items():
+        what = f"{rows[0]['method']}, h = T/{round(1 / rows[0]['step'])}" + (" (auto)" if c == "auto" else "")
+        print(f"| arnoldweb | {what} | {rows[0]['max_dE']:.2e} | {spread(rows, 'seconds')} | "
+              f"{spread(rows, 'cpu_seconds')} | {'yes' if rows[0]['max_dE'] <= a.target else 'no'} |")
+    for tol, h in hk.items():
+        rows = h["rows"]
+        print(f"| heyoka.py | tol {tol:.0e}, order {rows[0]['order']} (compile {h['compile_seconds']:.2f} s) | "
+              f"{rows[0]['max_dE']:.2e} | {spread(rows, 'seconds')} | {spread(rows, 'cpu_seconds')} | "
+              f"{'yes' if rows[0]['max_dE'] <= a.target else 'no'} |")
+    hk_ok = [h["rows"] for h in hk.values() if h["rows"][0]["max_dE"] <= a.target]
+    out = {"target": a.target, "repeat": a.repeat, "arnoldweb": aw,
+           "heyoka": {str(t): {"compile_seconds": h["compile_seconds"], "rows": h["rows"]} for t, h in hk.items()}}
+    if not hk_ok:
+        print("heyoka.py met the target with none of --hk-tols")
+        return out
+    for key, what in (("seconds", "wall"), ("cpu_seconds", "core-seconds")):
+        hrows = min(hk_ok, key=lambda rows: med(rows, key))
+        for c, rows in aw.items():
+            if rows[0]["max_dE"] <= a.target:
+                pairs = [h[key] / w[key] for h, w in zip(hrows, rows)]
+                print(f"lead of arnoldweb {c} in {what}: {med(hrows, key) / med(rows, key):.2f}x "
+                      f"(ratio of medians; pairs {min(pairs):.2f}-{max(pairs):.2f})")
+    return out
 
 
 def best(rows, target, key):
@@ -195,6 +281,14 @@ def main():
     ap.add_argument("--venv", default=os.path.join(ROOT, "build", "heyoka-venv"))
     ap.add_argument("--work", default="/tmp/arnoldweb-heyoka")
     ap.add_argument("--json", help="write every measured row here")
+    ap.add_argument("--focus", action="store_true",
+                    help="time one target's configurations of both sides --repeat times in turn (issue 29)")
+    ap.add_argument("--target", type=float, default=1e-8, help="--focus: the target max |dE|")
+    ap.add_argument("--aw-runs", default="aba864:128,auto",
+                    help="--focus: arnoldweb's configurations, METHOD:n (h = T/n) or auto (integrator.step = "
+                         "\"auto\" with integrator.tolerance = the target)")
+    ap.add_argument("--hk-tols", default="3e-11", help="--focus: heyoka's tolerances")
+    ap.add_argument("--repeat", type=int, default=5, help="--focus: rounds")
     a = ap.parse_args()
     if os.environ.get("ARNOLDWEB_HEYOKA_VENV") != "1":
         py = ensure_venv(a.venv)
@@ -217,6 +311,14 @@ def main():
     print(f"E = {a.energy:g}, {a.trajectories} trajectories x 10 T, |dE| every 0.5 T; {model}, "
           f"{os.cpu_count()} cores, {width}; heyoka.py {hy.__version__}, batch {a.batch}, {a.threads} threads; "
           f"{time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}", flush=True)
+    if a.focus:
+        out = focus(a, states)
+        if a.json:
+            out.update({"energy": a.energy, "trajectories": a.trajectories, "cpu": model, "vector": width,
+                        "heyoka": hy.__version__, "batch": a.batch, "date": time.strftime('%Y-%m-%d', time.gmtime())})
+            with open(a.json, "w") as f:
+                json.dump(out, f, indent=1)
+        return
     # 2. and 3. back to back
     aw = arnoldweb_ladder(a, a.work)
     hk = heyoka_ladder(a, states)

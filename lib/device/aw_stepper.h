@@ -66,26 +66,38 @@ AW_FN void aw_gradient_kick(aw_lstate* s, real k, real c, const lreal* g) {
   s->pz = AW_FMA(cc, g[2], AW_FMA(kk, s->fz, s->pz));
 }
 
-/* The kick-first stepper of force-gradient methods. The gradient at the start
- * of a segment is computed again (the state caches F only; F's bits are the
- * same). */
+/* The kick of a force-gradient method at s->u: P += k F + c g. A kick without
+ * a gradient term (c = 0: most kicks of SBAB_nC, SABA_nC and Chin 4A) forms no
+ * Hessian: P += k F, the value P + k F + 0 g has (F is written by one
+ * function of the model for both). The branch is the same for every
+ * trajectory. */
+AW_FN void aw_force_gradient_kick(aw_lstate* s, AW_CONSTANT aw_rparams* rp, real k, real c) {
+  if (c != AW_R(0.0)) {
+    lreal g[3];
+    aw_force_gradient(s, rp, g);
+    aw_gradient_kick(s, k, c, g);
+  } else {
+    aw_force(s, rp);
+    aw_kick(s, k);
+  }
+}
+
+/* The kick-first stepper of force-gradient methods. The force (and gradient)
+ * at the start of a segment is computed again (the state caches F only; F's
+ * bits are the same). */
 AW_FN void aw_segment_gradient(aw_lstate* s, aw_i64 nsteps, AW_CONSTANT aw_rparams* rp, int stages) {
-  lreal g[3];
-  aw_force_gradient(s, rp, g);
-  aw_gradient_kick(s, rp->kick[0], rp->gradient[0], g);
+  aw_force_gradient_kick(s, rp, rp->kick[0], rp->gradient[0]);
   for (aw_i64 n = 0; n < nsteps; ++n) {
     for (int i = 0; i < stages - 1; ++i) {
       aw_model_drift(s, rp->drift[i], rp);
-      aw_force_gradient(s, rp, g);
-      aw_gradient_kick(s, rp->kick[i + 1], rp->gradient[i + 1], g);
+      aw_force_gradient_kick(s, rp, rp->kick[i + 1], rp->gradient[i + 1]);
     }
     aw_model_drift(s, rp->drift[stages - 1], rp);
     aw_wrap(s);
-    aw_force_gradient(s, rp, g);
     if (n + 1 < nsteps)
-      aw_gradient_kick(s, rp->kick_merged, rp->gradient_merged, g);
+      aw_force_gradient_kick(s, rp, rp->kick_merged, rp->gradient_merged);
     else
-      aw_gradient_kick(s, rp->kick[stages], rp->gradient[stages], g);
+      aw_force_gradient_kick(s, rp, rp->kick[stages], rp->gradient[stages]);
   }
 }
 

@@ -348,4 +348,28 @@ TEST_SUITE("methods") {
     c.gradient.back() *= 1.01;
     CHECK(eps_slopes(c, 0.1)[1] < 2.5);
   }
+
+  TEST_CASE("a step forms the Hessian only at the kicks with a gradient term, and costs what it forms") {
+    // the stepper (aw_stepper.h) forms it where g != 0, the first and last kick merged across steps
+    for (const char* name : {"leapfrog", "yoshida6a", "aba864", "srkn11b"}) {
+      CAPTURE(name);
+      CHECK(find_method(name).gradient_stages() == 0);
+      CHECK(find_method(name).work() == find_method(name).stages);
+    }
+    // the correctors sit on the end kicks (SBAB_nC) or on the pure gradient kick between steps
+    // (SABA_nC); Chin 4A's gradient is on its middle kick: one Hessian a step each
+    for (const char* name : {"sbab1c", "sbab2c", "sbab3c", "sbab4c", "saba1c", "saba4c", "chin4a"}) {
+      const Method& m = find_method(name);
+      CAPTURE(name);
+      CHECK(m.gradient_stages() == 1);
+      CHECK(m.work() == doctest::Approx(m.stages + (kGradientWork - 1.0)));
+    }
+    CHECK(find_method("sbab3c").work() == doctest::Approx(3.2));
+    CHECK(find_method("chin4a").work() == doctest::Approx(2.2));
+    // a table with gradient terms on every kick pays on every evaluation
+    Method every = find_method("chin4a");
+    every.gradient = {0.01, 0.02, 0.01};
+    CHECK(every.gradient_stages() == 2);
+    CHECK(every.work() == doctest::Approx(2 * kGradientWork));
+  }
 }

@@ -39,8 +39,11 @@ struct Method {
   std::string family;  // "composition", "rkn", "near-integrable" or "force-gradient"
   // Whether any kick carries a force-gradient term.
   bool force_gradient() const;
-  // The cost of one step in plain force evaluations: stages, times kGradientWork for a
-  // force-gradient method (each of its evaluations also forms the Hessian and the gradient).
+  // Force evaluations a step that also form the Hessian and the gradient: the kicks with a
+  // gradient term (the first and last, merged across steps, count once). The others are plain.
+  int gradient_stages() const;
+  // The cost of one step in plain force evaluations: stages, plus kGradientWork - 1 for each
+  // of its gradient_stages().
   double work() const;
 };
 

@@ -373,7 +373,14 @@ bool Method::force_gradient() const {
   return std::any_of(gradient.begin(), gradient.end(), [](double g) { return g != 0.0; });
 }
 
-double Method::work() const { return stages * (force_gradient() ? kGradientWork : 1.0); }
+int Method::gradient_stages() const {
+  if (!force_gradient()) return 0;
+  int n = (gradient.front() + gradient.back() != 0.0) ? 1 : 0;  // the merged kick between steps
+  for (std::size_t i = 1; i + 1 < gradient.size(); ++i) n += (gradient[i] != 0.0) ? 1 : 0;
+  return n;
+}
+
+double Method::work() const { return stages + gradient_stages() * (kGradientWork - 1.0); }
 
 std::string method_names() {
   std::string s;
