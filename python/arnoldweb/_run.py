@@ -98,14 +98,7 @@ def continue_run(out_dir: "str | os.PathLike[str]", duration: float, device: Opt
 
     folder = os.path.abspath(os.fspath(out_dir))
     summary_path = os.path.join(folder, "summary.json")
-    import json
-
-    try:
-        summary = json.loads(_core._read_saved_file(folder, "summary.json"))
-    except OutputError:
-        raise
-    except ValueError as e:
-        raise OutputError(f"{summary_path}: not a summary of arnoldweb ({e})", path=summary_path) from None
+    summary = _core.read_saved_summary(folder)  # a plain file, a JSON object of the right form
     text = summary.get("scene_toml") if isinstance(summary, dict) else None
     if not isinstance(text, str):
         raise OutputError(f"{summary_path}: has no scene_toml: not a summary of an arnoldweb run", path=summary_path)
