@@ -5,9 +5,7 @@
 // of 2T is, bit for bit, a run of T continued for T (the final states, and
 // the map of the second window). The outputs go to --out (default
 // OUTDIR-to-<end time>); --set and --device apply on top.
-#include <fstream>
 #include <iostream>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "arnoldweb/arnoldweb.hpp"
@@ -32,42 +30,17 @@ std::string number(double v) {
   return s.str();
 }
 
-// summary.json of a finished run: its scene as run and when it ended.
-struct FinishedRun {
-  std::string scene_toml, summary;
-  double end_time = 0;  // in T
-};
-
-// Read as render and compare read it (saved_run.hpp): a plain file of the form
-// arnoldweb writes; SavedRunError (exit 2) naming it otherwise.
-FinishedRun read_finished(const std::string& dir) {
-  FinishedRun f;
-  f.summary = dir + "/summary.json";
-  const nlohmann::json j = nlohmann::json::parse(read_saved_summary(dir));
-  f.scene_toml = j["scene_toml"].get<std::string>();
-  const auto time = j.find("time");
-  if (time != j.end() && time->is_object() && time->contains("end") && (*time)["end"].is_number())
-    f.end_time = (*time)["end"].get<double>();
-  return f;
-}
-
 int continue_run(ContinueFlags& f) {
   refuse_mpirun_without_mpi();
   if (cluster() && cluster()->rank() != 0) return serve_rank(f.scene.device);
   std::string from = f.from;
   while (from.size() > 1 && from.back() == '/') from.pop_back();
-  const FinishedRun run = read_finished(from);
-  const std::string states = from + "/states.h5";
-  if (!std::ifstream(states))
-    throw SavedRunError(states, "the run kept no final states to continue from: run it with "
-                                "observe.final_states = true");
-  read_saved_file(from, "states.h5");  // checked against its size and digest in summary.json
   if (!(f.duration > 0))
     throw SceneError("--for", 0, 0, "run.duration", "--for must be a duration in T greater than 0");
   // the run's scene as run, then what continuing changes, then the user's --set
-  std::vector<std::string> sets = {"ensemble.initial=\"file\"", "ensemble.file=" + states,
-                                   "run.duration=" + number(f.duration)};
-  std::vector<std::string> labels = {"continue " + from, "continue " + from, "--for " + number(f.duration)};
+  const Continuation run = continuation_of(from, f.duration);
+  std::vector<std::string> sets = run.overrides, labels = run.labels;
+  labels.back() = "--for " + number(f.duration);
   if (!f.scene.out) f.scene.out = from + "-to-" + number(run.end_time + f.duration);
   sets.insert(sets.end(), f.scene.sets.begin(), f.scene.sets.end());
   labels.resize(sets.size());
@@ -77,8 +50,8 @@ int continue_run(ContinueFlags& f) {
     sets.push_back("run.device=" + *f.scene.device);
     labels.push_back("--device " + *f.scene.device);
   }
-  const Scene scene = parse_scene(run.scene_toml, run.summary, sets, labels);
-  const PreparedJob prepared = prepare_scene_job(scene, run.summary, f.force);
+  const Scene scene = parse_scene(run.scene_toml, run.source, sets, labels);
+  const PreparedJob prepared = prepare_scene_job(scene, run.source, f.force);
   return execute_job(prepared, f.quiet, std::nullopt, f.scene.device);
 }
 

@@ -249,6 +249,70 @@ AW_FN real aw_naff_fft_peak(AW_GLOBAL const real* re, AW_GLOBAL const real* im, 
   return sigma;
 }
 
+/* The state of the search for one maximum (aw_naff_refine's steps). */
+typedef struct {
+  real x, lo, hi, last_newton;
+  int have_lo, have_hi, newton_before, done;
+} aw_naff_search;
+
+AW_FN void aw_naff_search_begin(aw_naff_search* q, real sigma0) {
+  q->x = sigma0;
+  q->lo = q->hi = q->last_newton = AW_R(0.0);
+  q->have_lo = q->have_hi = q->newton_before = q->done = 0;
+}
+
+/* One step of the search from the sums at q->x: 1 when it moved q->x and
+ * wants the sums there, 0 when it stopped (q->done: at a maximum; else the
+ * sums were not finite). */
+AW_FN int aw_naff_search_step(aw_naff_search* q, const aw_naff_sums* s, int n) {
+#ifdef AW_FLOAT
+  const real eps = AW_R(1.1920928955078125e-07);
+#else
+  const real eps = AW_R(2.220446049250313e-16);
+#endif
+  const real half_bin = AW_R(0.5) / (real)n;
+  const real g = aw_naff_slope(s), c = aw_naff_curvature(s);
+  if (!(g == g && c == c)) return 0; /* not finite */
+  if (g == AW_R(0.0) && c < AW_R(0.0)) {
+    q->done = 1;
+    return 0;
+  }
+  if (g > AW_R(0.0)) {
+    q->lo = q->x;
+    q->have_lo = 1;
+  } else {
+    q->hi = q->x;
+    q->have_hi = 1;
+  }
+  real step = (c < AW_R(0.0)) ? -g / (AW_NAFF_TWO_PI * c) : AW_R(0.0);
+  int newton = c < AW_R(0.0) && AW_FABS(step) <= half_bin;
+  if (!newton) step = (g > AW_R(0.0)) ? half_bin : -half_bin; /* uphill */
+  if (newton && AW_FABS(step) <= eps * (AW_FABS(q->x) + half_bin)) {
+    q->x = q->x + step;
+    q->done = 1;
+    return 0;
+  }
+  real next = q->x + step;
+  if (q->have_lo && q->have_hi && !(next > q->lo && next < q->hi)) {
+    next = AW_R(0.5) * (q->lo + q->hi);
+    newton = 0;
+  }
+  const real size = AW_FABS(next - q->x);
+  if (size <= eps * (AW_FABS(q->x) + half_bin)) { /* a bracket as narrow as round-off */
+    q->x = next;
+    q->done = 1;
+    return 0;
+  }
+  if (newton && q->newton_before && size > AW_R(0.5) * q->last_newton) {
+    q->done = 1; /* the round-off floor: keep x */
+    return 0;
+  }
+  q->newton_before = newton;
+  if (newton) q->last_newton = size;
+  q->x = next;
+  return 1;
+}
+
 /* The frequency of the maximum of |phi| nearest to sigma0 (within the main
  * lobe of the window, about p + 1 bins of 1/n), to round-off. Each pass gives
  * the slope g and the curvature c of |phi|^2 at x: where c < 0 (near the
@@ -262,63 +326,17 @@ AW_FN real aw_naff_fft_peak(AW_GLOBAL const real* re, AW_GLOBAL const real* im, 
  * AW_NAFF_MAX_ITER passes, or the samples are not finite. n >= 3, p >= 0. */
 AW_FN void aw_naff_refine(AW_GLOBAL const real* re, AW_GLOBAL const real* im, aw_u64 stride, int n, int p,
                           real sigma0, aw_naff_result* out) {
-#ifdef AW_FLOAT
-  const real eps = AW_R(1.1920928955078125e-07);
-#else
-  const real eps = AW_R(2.220446049250313e-16);
-#endif
-  const real half_bin = AW_R(0.5) / (real)n;
+  aw_naff_search q;
+  aw_naff_search_begin(&q, sigma0);
   aw_naff_sums s;
-  real x = sigma0;
-  aw_naff_sums_at(re, im, stride, n, p, x, &s);
-  int passes = 1, done = 0, newton_before = 0;
-  real lo = AW_R(0.0), hi = AW_R(0.0), last_newton = AW_R(0.0);
-  int have_lo = 0, have_hi = 0;
-  for (int it = 0; it < AW_NAFF_MAX_ITER && !done; ++it) {
-    const real g = aw_naff_slope(&s), c = aw_naff_curvature(&s);
-    if (!(g == g && c == c)) break; /* not finite */
-    if (g == AW_R(0.0) && c < AW_R(0.0)) {
-      done = 1;
-      break;
-    }
-    if (g > AW_R(0.0)) {
-      lo = x;
-      have_lo = 1;
-    } else {
-      hi = x;
-      have_hi = 1;
-    }
-    real step = (c < AW_R(0.0)) ? -g / (AW_NAFF_TWO_PI * c) : AW_R(0.0);
-    int newton = c < AW_R(0.0) && AW_FABS(step) <= half_bin;
-    if (!newton) step = (g > AW_R(0.0)) ? half_bin : -half_bin; /* uphill */
-    if (newton && AW_FABS(step) <= eps * (AW_FABS(x) + half_bin)) {
-      x = x + step;
-      done = 1;
-      break;
-    }
-    real next = x + step;
-    if (have_lo && have_hi && !(next > lo && next < hi)) {
-      next = AW_R(0.5) * (lo + hi);
-      newton = 0;
-    }
-    const real size = AW_FABS(next - x);
-    if (size <= eps * (AW_FABS(x) + half_bin)) { /* a bracket as narrow as round-off */
-      x = next;
-      done = 1;
-      break;
-    }
-    if (newton && newton_before && size > AW_R(0.5) * last_newton) {
-      done = 1; /* the round-off floor: keep x */
-      break;
-    }
-    newton_before = newton;
-    if (newton) last_newton = size;
-    x = next;
-    aw_naff_sums_at(re, im, stride, n, p, x, &s);
+  aw_naff_sums_at(re, im, stride, n, p, q.x, &s);
+  int passes = 1;
+  for (int it = 0; it < AW_NAFF_MAX_ITER && aw_naff_search_step(&q, &s, n); ++it) {
+    aw_naff_sums_at(re, im, stride, n, p, q.x, &s);
     passes += 1;
   }
-  out->ok = done;
-  out->freq = done ? x : sigma0;
+  out->ok = q.done;
+  out->freq = q.done ? q.x : sigma0;
   out->amp_re = s.s0r / s.wsum;
   out->amp_im = s.s0i / s.wsum;
   out->passes = passes;
@@ -407,24 +425,19 @@ AW_FN void aw_naff_lsums_at(AW_GLOBAL const real* re, AW_GLOBAL const real* im, 
  * (freq[j] = sigma0 where 0). Lanes not active are left as they are. */
 AW_FN void aw_naff_refine_lanes(AW_GLOBAL const real* re, AW_GLOBAL const real* im, aw_u64 stride, int n,
                                 lreal sigma0, const int* active, real* freq, int* ok) {
-#ifdef AW_FLOAT
-  const real eps = AW_R(1.1920928955078125e-07);
-#else
-  const real eps = AW_R(2.220446049250313e-16);
-#endif
-  const real half_bin = AW_R(0.5) / (real)n;
-  real x[AW_LANES], start[AW_LANES], lo[AW_LANES], hi[AW_LANES], last_newton[AW_LANES];
-  int running[AW_LANES], done[AW_LANES], have_lo[AW_LANES], have_hi[AW_LANES], newton_before[AW_LANES];
+  real start[AW_LANES];
+  aw_naff_search q[AW_LANES];
+  int running[AW_LANES];
   AW_STORE_LANES(sigma0, start);
   int left = 0;
   for (int j = 0; j < AW_LANES; ++j) {
-    x[j] = start[j];
-    lo[j] = hi[j] = last_newton[j] = AW_R(0.0);
+    aw_naff_search_begin(&q[j], start[j]);
     running[j] = active[j];
-    done[j] = have_lo[j] = have_hi[j] = newton_before[j] = 0;
     left += running[j];
   }
   for (int it = 0; it < AW_NAFF_MAX_ITER && left > 0; ++it) {
+    real x[AW_LANES];
+    for (int j = 0; j < AW_LANES; ++j) x[j] = q[j].x;
     aw_naff_lsums ls;
     aw_naff_lsums_at(re, im, stride, n, AW_LOAD_LANES(x), &ls);
     real s0r[AW_LANES], s0i[AW_LANES], s1r[AW_LANES], s1i[AW_LANES], s2r[AW_LANES], s2i[AW_LANES];
@@ -434,59 +447,18 @@ AW_FN void aw_naff_refine_lanes(AW_GLOBAL const real* re, AW_GLOBAL const real* 
     AW_STORE_LANES(ls.s1i, s1i);
     AW_STORE_LANES(ls.s2r, s2r);
     AW_STORE_LANES(ls.s2i, s2i);
+    left = 0;
     for (int j = 0; j < AW_LANES; ++j) {
       if (!running[j]) continue;
-      /* one step of aw_naff_refine's loop */
-      running[j] = 0;
       const aw_naff_sums s = {s0r[j], s0i[j], s1r[j], s1i[j], s2r[j], s2i[j], AW_R(1.0)};
-      const real g = aw_naff_slope(&s), c = aw_naff_curvature(&s);
-      if (!(g == g && c == c)) continue;
-      if (g == AW_R(0.0) && c < AW_R(0.0)) {
-        done[j] = 1;
-        continue;
-      }
-      if (g > AW_R(0.0)) {
-        lo[j] = x[j];
-        have_lo[j] = 1;
-      } else {
-        hi[j] = x[j];
-        have_hi[j] = 1;
-      }
-      real step = (c < AW_R(0.0)) ? -g / (AW_NAFF_TWO_PI * c) : AW_R(0.0);
-      int newton = c < AW_R(0.0) && AW_FABS(step) <= half_bin;
-      if (!newton) step = (g > AW_R(0.0)) ? half_bin : -half_bin;
-      if (newton && AW_FABS(step) <= eps * (AW_FABS(x[j]) + half_bin)) {
-        x[j] = x[j] + step;
-        done[j] = 1;
-        continue;
-      }
-      real next = x[j] + step;
-      if (have_lo[j] && have_hi[j] && !(next > lo[j] && next < hi[j])) {
-        next = AW_R(0.5) * (lo[j] + hi[j]);
-        newton = 0;
-      }
-      const real size = AW_FABS(next - x[j]);
-      if (size <= eps * (AW_FABS(x[j]) + half_bin)) {
-        x[j] = next;
-        done[j] = 1;
-        continue;
-      }
-      if (newton && newton_before[j] && size > AW_R(0.5) * last_newton[j]) {
-        done[j] = 1;
-        continue;
-      }
-      newton_before[j] = newton;
-      if (newton) last_newton[j] = size;
-      x[j] = next;
-      running[j] = 1;
+      running[j] = aw_naff_search_step(&q[j], &s, n);
+      left += running[j];
     }
-    left = 0;
-    for (int j = 0; j < AW_LANES; ++j) left += running[j];
   }
   for (int j = 0; j < AW_LANES; ++j) {
     if (!active[j]) continue;
-    ok[j] = done[j];
-    freq[j] = done[j] ? x[j] : start[j];
+    ok[j] = q[j].done;
+    freq[j] = q[j].done ? q[j].x : start[j];
   }
 }
 

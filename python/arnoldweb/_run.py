@@ -93,27 +93,10 @@ def continue_run(out_dir: "str | os.PathLike[str]", duration: float, device: Opt
     the trajectories makes another run). ``device``, ``progress``, ``out`` and ``force`` as in
     :func:`run`: with ``out`` None nothing is written. Raises OutputError (no summary.json, no
     final states, a damaged states.h5), SceneError, DeviceError, StateError."""
-    from ._errors import OutputError
-    from ._saved import _checked
-
-    folder = os.path.abspath(os.fspath(out_dir))
-    summary_path = os.path.join(folder, "summary.json")
-    summary = _core.read_saved_summary(folder)  # a plain file, a JSON object of the right form
-    text = summary.get("scene_toml") if isinstance(summary, dict) else None
-    if not isinstance(text, str):
-        raise OutputError(f"{summary_path}: has no scene_toml: not a summary of an arnoldweb run", path=summary_path)
-    states = os.path.join(folder, "states.h5")
-    if not os.path.exists(states):
-        raise OutputError(f"{states}: the run kept no final states to continue from: run it with "
-                          "observe.final_states = true", path=states)
-    _checked(states)  # its size and digest, as summary.json records them
     if not (isinstance(duration, (int, float)) and duration > 0 and duration != float("inf")):
         raise ValueError(f"duration must be a time in T greater than 0, not {duration!r}")
-    s = Scene.from_toml(text, name=summary_path)
-    label = f"continue_run({os.fspath(out_dir)!r})"
-    s._apply('ensemble.initial="file"', label)
-    s._apply(f"ensemble.file={_quote(states)}", label)
-    s._apply(f"run.duration={float(duration)!r}", f"duration={duration!r}")
+    c = _core._continuation_of(os.path.abspath(os.fspath(out_dir)), float(duration))
+    s = Scene._make(c["scene_toml"], c["source"], c["overrides"], c["labels"])
     for key, value in (sets or {}).items():
         s = s.set(key, value)
     return run(s, device=device, progress=progress, out=out, force=force)

@@ -7,6 +7,7 @@
 #include "bindings.hpp"
 
 #include <nanobind/stl/string.h>
+#include <nanobind/stl/vector.h>
 
 #include <cstring>
 
@@ -63,6 +64,21 @@ void bind_saved(nb::module_& m) {
       nb::arg("dir"), nb::arg("name"),
       "The bytes of a file of an output directory, checked against the size and digest summary.json "
       "records (OutputError naming it otherwise).");
+  m.def(
+      "_continuation_of",
+      [](const std::string& dir, double duration) {
+        const arnoldweb::Continuation c = arnoldweb::continuation_of(dir, duration);
+        nb::dict d;
+        d["scene_toml"] = c.scene_toml;
+        d["source"] = c.source;
+        d["end_time"] = c.end_time;
+        d["overrides"] = c.overrides;
+        d["labels"] = c.labels;
+        return d;
+      },
+      nb::arg("dir"), nb::arg("duration"),
+      "What continuing the finished run in dir starts from: its scene as it ran and the overrides "
+      "that start it from its checked states.h5 (arnoldweb::continuation_of).");
   m.def("_read_maps", &read_maps, nb::arg("dir"),
         "The maps of an output directory (summary.json, map.h5): nside, map, frames, zoom and the "
         "map's digest as summary.json computes it. Raises OutputError naming a missing or bad file.");

@@ -193,6 +193,21 @@ std::string read_saved_summary(const std::string& dir);
 // directory without digests: read unchecked). SavedRunError otherwise.
 std::string read_saved_file(const std::string& dir, const std::string& name);
 
+// What continuing the finished run in `dir` starts from (`arnoldweb continue`,
+// Python's continue_run): the run's scene as it ran (summary.json's
+// scene_toml) and the overrides, in order, that start its trajectories from
+// the final states, windings and time of its states.h5 (checked against the
+// size and digest summary.json records) and run them `duration` T more; a
+// caller's own overrides go after them. SavedRunError naming summary.json or
+// states.h5 for a directory that is not a finished run or kept no final states.
+struct Continuation {
+  std::string scene_toml;
+  std::string source;     // <dir>/summary.json, the scene's name in messages
+  double end_time = 0;    // when the run ended, in T
+  std::vector<std::string> overrides, labels;  // labels: how each override was given
+};
+Continuation continuation_of(const std::string& dir, double duration);
+
 // Draws the pictures of an output directory written earlier (from its
 // summary.json and map.h5; e.g. a GPU node's run, on a machine with cairo),
 // its panels' and figure.png. Returns the paths written.

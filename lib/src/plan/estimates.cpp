@@ -49,29 +49,26 @@ std::string histogram_key(const Plan& p) {
   return "observe.velocity_map.nside";
 }
 
-}  // namespace
-
-std::uint64_t largest_chunk(const Plan& plan) {
+// The largest launch whose frequency series fit in `series_budget` bytes.
+std::uint64_t largest_chunk_within(const Plan& plan, double series_budget) {
   std::uint64_t m = has_states(plan) ? kMaxChunkStates : kMaxChunk;
   // 32-bit counts per launch: windows * chunk must stay below 2^32
   m = std::min<std::uint64_t>(m, 4000000000ull / static_cast<std::uint64_t>(std::max<std::int64_t>(plan.windows, 1)));
   const double series = series_bytes(plan, 8);
-  if (series > 0) m = std::min<std::uint64_t>(m, std::max<std::uint64_t>(1, static_cast<std::uint64_t>(kMaxSeriesBytes / series)));
+  if (series > 0) m = std::min<std::uint64_t>(m, std::max<std::uint64_t>(1, static_cast<std::uint64_t>(series_budget / series)));
   if (plan.scene.chunk) m = plan.scene.chunk;
   return std::max<std::uint64_t>(1, std::min(m, plan.scene.trajectories));
 }
 
+}  // namespace
+
+std::uint64_t largest_chunk(const Plan& plan) { return largest_chunk_within(plan, kMaxSeriesBytes); }
+
 std::uint64_t largest_chunk(const Plan& plan, const DeviceInfo& device) {
-  const std::uint64_t m = largest_chunk(plan);
-  const double series = series_bytes(plan, 8);
-  if (series <= 0 || device.is_cpu || plan.scene.chunk || device.memory == 0) return m;
+  if (device.is_cpu || device.memory == 0) return largest_chunk(plan);
   double room = static_cast<double>(device.memory) / 4;
   if (device.max_allocation) room = std::min(room, static_cast<double>(device.max_allocation));
-  if (room <= kMaxSeriesBytes) return m;
-  std::uint64_t larger = std::min<std::uint64_t>(has_states(plan) ? kMaxChunkStates : kMaxChunk,
-                                                 static_cast<std::uint64_t>(room / series));
-  larger = std::min<std::uint64_t>(larger, 4000000000ull / static_cast<std::uint64_t>(std::max<std::int64_t>(plan.windows, 1)));
-  return std::max<std::uint64_t>(1, std::min(std::max(m, larger), plan.scene.trajectories));
+  return largest_chunk_within(plan, std::max(room, kMaxSeriesBytes));
 }
 
 MemoryEstimate estimate_memory(const Plan& plan) {
