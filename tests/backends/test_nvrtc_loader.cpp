@@ -1,6 +1,8 @@
 // NVRTC is opened at run time (backends/cuda/nvrtc_api.hpp), not linked: the
 // library loads where no CUDA toolkit is installed (the wheel), and says where
 // it looked when NVRTC is missing (ctest nvrtc, CUDA builds).
+// (the loader is part of CUDA builds only: builds with ARNOLDWEB_CUDA=OFF, such as build-asan, skip this file)
+#ifdef ARNOLDWEB_HAVE_CUDA
 #include <doctest/doctest.h>
 
 #include <cstdlib>
@@ -36,3 +38,5 @@ TEST_SUITE("nvrtc") {
     CHECK(detail::nvrtc_check_candidates({detail::nvrtc_library()}).empty());
   }
 }
+
+#endif  // ARNOLDWEB_HAVE_CUDA
