@@ -6,6 +6,9 @@ install(TARGETS arnoldweb EXPORT arnoldwebTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+if(TARGET arnoldweb_pictures)  # the pictures' plugin, opened from beside the library
+  install(TARGETS arnoldweb_pictures LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/lib/include/arnoldweb
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
 install(FILES ${PROJECT_BINARY_DIR}/lib/include/arnoldweb/version.hpp

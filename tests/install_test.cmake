@@ -7,8 +7,13 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${pr
 if(rc)
   message(FATAL_ERROR "install failed: ${rc}")
 endif()
+# a build with cairo has the pictures' plugin: the downstream program draws through it
+set(pictures OFF)
+if(EXISTS "${BUILD_DIR}/lib/libarnoldweb_pictures.so")
+  set(pictures ON)
+endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/downstream" -B "${work}" -G "${GENERATOR}"
-                        "-DCMAKE_PREFIX_PATH=${prefix}" RESULT_VARIABLE rc)
+                        "-DCMAKE_PREFIX_PATH=${prefix}" "-DEXPECT_PICTURES=${pictures}" RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "configuring the downstream project failed: ${rc}")
 endif()

@@ -74,4 +74,15 @@ for dev, name, pm, cm, ps, cs, pt, ct, b in rows:
 maps = {r[2] for r in rows} | {r[3] for r in rows}
 states = {r[4] for r in rows} | {r[5] for r in rows}
 print("all digests identical (python, CLI, every device):", len(maps) == 1 and len(states) == 1)
+
+# pictures: drawn by the plugin where cairo's libraries are on the machine; else the run
+# says why it drew none (a PlanWarning from Python, a warning line from the CLI)
+import warnings
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    aw.run(aw.scene("default").set("ensemble.trajectories", 2000), device="cpu", out=os.path.join(work, "pictures"))
+drawn = sorted(f for f in os.listdir(os.path.join(work, "pictures")) if f.endswith(".png"))
+print("pictures drawn:", drawn or "none")
+for w in caught:
+    print("warning:", w.category.__name__, str(w.message))
 PY

@@ -1,6 +1,6 @@
 // arnoldweb: the files of the analyses of a finished run (Result::analyses,
-// docs/frequencies.md): diffusion.csv (text) and the pictures
-// frequency_map.png, diffusion_index.png and diffusion.png (cairo).
+// docs/frequencies.md): diffusion.csv (text); their pictures are drawn by
+// the pictures' plugin (pictures/drawing.hpp).
 #pragma once
 
 #include <string>
@@ -15,11 +15,5 @@ namespace arnoldweb::detail {
 // t,along_mean,along_variance,across_variance (empty cells: not finite).
 // Empty without a diffusion analysis with moments.
 std::string diffusion_csv(const Result& result);
-
-// Writes frequency_map.png and diffusion_index.png (a grid scene) of a run
-// with observe.frequencies, and diffusion.png of one with a diffusion
-// analysis, into `dir`; appends their names to `names`. Throws OutputError.
-void write_analysis_pictures(const Plan& plan, const Result& result, const std::string& dir,
-                             std::vector<std::string>& names);
 
 }  // namespace arnoldweb::detail

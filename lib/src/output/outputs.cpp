@@ -12,7 +12,6 @@
 #include "aw_params.h"
 #include "output/analysis_files.hpp"
 #include "output/file_digest.hpp"
-#include "output/indicator_pictures.hpp"
 #include "output/output_dir.hpp"
 #include "output/pictures.hpp"
 #include "plan/plan_params.hpp"
@@ -49,12 +48,6 @@ void write_run_files(const Plan& plan, const Result& result, const fs::path& dir
   if (const std::string csv = detail::diffusion_csv(result); !csv.empty())
     file("diffusion.csv", [&](const std::string& p) { write_text_file(p, csv); });
   if (plan.scene.images) detail::write_pictures(plan, result, dir.string(), names);
-#ifdef ARNOLDWEB_HAVE_CAIRO
-  if (plan.scene.images) {
-    detail::write_indicator_pictures(plan, result, dir.string(), names);
-    detail::write_analysis_pictures(plan, result, dir.string(), names);
-  }
-#endif
 }
 
 std::vector<std::string> prefixed(const std::string& sub, const std::vector<std::string>& names) {

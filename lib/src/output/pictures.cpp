@@ -11,6 +11,7 @@
 #include "physics/model_descriptor.hpp"
 #include "plan/plan_params.hpp"
 #include "output/atomic_file.hpp"
+#include "output/picture_plugin.hpp"
 
 namespace arnoldweb::detail {
 namespace {
@@ -68,13 +69,7 @@ RenderOptions picture_options(const Plan& plan, const Result& r) {
   return o;
 }
 
-bool pictures_available() {
-#ifdef ARNOLDWEB_HAVE_CAIRO
-  return true;
-#else
-  return false;
-#endif
-}
+bool pictures_available(std::string* why) { return picture_functions(why) != nullptr; }
 
 bool initial_centre(const Scene& s, double* lon, double* lat) {
   if (s.initial == "cap") {
@@ -92,24 +87,25 @@ bool initial_centre(const Scene& s, double* lon, double* lat) {
   return true;
 }
 
-#ifdef ARNOLDWEB_HAVE_CAIRO
 void write_pictures(const Plan& plan, const Result& r, const std::string& dir, std::vector<std::string>& out) {
+  const PictureFunctions* draw = picture_functions();
+  if (!draw) return;  // the plan said so (plan_job's warning)
   const RenderOptions o = picture_options(plan, r);
   if (plan.scene.velocity_map) {
-    render_sphere_png(dir + "/map.png", r.map, plan.scene.nside, o);
+    draw->sphere(dir + "/map.png", r.map, plan.scene.nside, o);
     out.push_back("map.png");
-    render_mollweide_png(dir + "/map_mollweide.png", r.map, plan.scene.nside, o);
+    draw->mollweide(dir + "/map_mollweide.png", r.map, plan.scene.nside, o);
     out.push_back("map_mollweide.png");
     RenderOptions overlay = o;
     overlay.resonance_order = 2;
     overlay.title = o.title + (o.resonances.empty() ? ";  circles m.P = 0, |m_i| <= 2" : ";  circles k.V = 0 of the model's harmonics");
-    render_sphere_png(dir + "/map_resonances.png", r.map, plan.scene.nside, overlay);
+    draw->sphere(dir + "/map_resonances.png", r.map, plan.scene.nside, overlay);
     out.push_back("map_resonances.png");
   }
   if (!r.zoom.empty()) {
     RenderOptions z = o;
     z.resonance_order = 3;
-    render_zoom_png(dir + "/zoom.png", r.zoom, plan.zoom_resolution, plan.scene.zoom_center, plan.scene.zoom_width, z);
+    draw->zoom(dir + "/zoom.png", r.zoom, plan.zoom_resolution, plan.scene.zoom_center, plan.scene.zoom_width, z);
     out.push_back("zoom.png");
   }
   if (!r.frames.empty()) {
@@ -123,7 +119,7 @@ void write_pictures(const Plan& plan, const Result& r, const std::string& dir, s
                 short_number(plan.scene.frame_times[k]) + ", " + short_number(plan.scene.frame_times[k + 1]) + ") T";
       char name[32];
       std::snprintf(name, sizeof name, "frames/frame_%03zu.png", k);
-      render_sphere_png(dir + "/" + name, r.frames[k], plan.scene.nside, f);
+      draw->sphere(dir + "/" + name, r.frames[k], plan.scene.nside, f);
       out.push_back(name);
     }
     if (have_ffmpeg()) {
@@ -131,14 +127,39 @@ void write_pictures(const Plan& plan, const Result& r, const std::string& dir, s
       out.push_back("frames.mp4");
     }
   }
+  draw->indicators(plan, r, dir, out);
+  draw->analyses(plan, r, dir, out);
 }
-#else
-void write_pictures(const Plan&, const Result&, const std::string&, std::vector<std::string>&) {}
-#endif
 
 }  // namespace arnoldweb::detail
 
 namespace arnoldweb {
+namespace {
+
+const detail::PictureFunctions& plugin_for(const std::string& path) {
+  std::string why;
+  const detail::PictureFunctions* f = detail::picture_functions(&why);
+  if (!f) throw OutputError(path, "no pictures: " + why);
+  return *f;
+}
+
+}  // namespace
+
+void render_sphere_png(const std::string& path, const std::vector<std::uint64_t>& map, int nside,
+                       const RenderOptions& o) {
+  plugin_for(path).sphere(path, map, nside, o);
+}
+
+void render_mollweide_png(const std::string& path, const std::vector<std::uint64_t>& map, int nside,
+                          const RenderOptions& o) {
+  plugin_for(path).mollweide(path, map, nside, o);
+}
+
+void render_figure_png(const std::string& path, const Plan& plan, const Result& result,
+                       const std::vector<FigurePanel>& panels, const RenderOptions& o) {
+  plugin_for(path).figure(path, plan, result, panels, o);
+}
+
 std::string write_figure(const std::string& dir, const Plan& plan, const Result& result,
                          const std::vector<FigurePanel>& panels) {
   if (!detail::pictures_available() || !plan.scene.images || !plan.scene.velocity_map) return "";
@@ -154,19 +175,5 @@ std::string write_figure(const std::string& dir, const Plan& plan, const Result&
   render_figure_png(path, plan, result, panels, o);
   return path;
 }
-}  // namespace arnoldweb
 
-#ifndef ARNOLDWEB_HAVE_CAIRO
-namespace arnoldweb {
-void render_sphere_png(const std::string& path, const std::vector<std::uint64_t>&, int, const RenderOptions&) {
-  throw OutputError(path, "this build has no pictures (cairo was not found when it was configured)");
-}
-void render_mollweide_png(const std::string& path, const std::vector<std::uint64_t>&, int, const RenderOptions&) {
-  throw OutputError(path, "this build has no pictures (cairo was not found when it was configured)");
-}
-void render_figure_png(const std::string& path, const Plan&, const Result&, const std::vector<FigurePanel>&,
-                       const RenderOptions&) {
-  throw OutputError(path, "this build has no pictures (cairo was not found when it was configured)");
-}
 }  // namespace arnoldweb
-#endif

@@ -36,8 +36,7 @@ void list_in_summary(const detail::SavedDir& saved, const detail::DigestLedger& 
 }  // namespace
 
 std::vector<std::string> render_saved(const std::string& dir) {
-  if (!detail::pictures_available())
-    throw OutputError(dir, "this build has no pictures (cairo was not found when it was configured)");
+  if (std::string why; !detail::pictures_available(&why)) throw OutputError(dir, "no pictures: " + why);
   // everything is read and checked before anything is drawn
   const detail::SavedDir main_dir(dir);
   const detail::SavedRun main = detail::read_saved_run(main_dir);

@@ -1,14 +1,20 @@
 // arnoldweb: planning a job: the scene and its panels (job.hpp).
 #include "arnoldweb/job.hpp"
 
+#include "output/pictures.hpp"
 #include "plan/checks.hpp"
 
 namespace arnoldweb {
 
 namespace {
 
+// A scene that asks for pictures where none can be drawn runs and writes its
+// numbers; its plan says why it will draw none.
 Plan plan_resolved(const Scene& scene, const StepResolver& resolve) {
-  return make_plan(scene.step_auto && resolve ? resolve(scene) : scene);
+  Plan p = make_plan(scene.step_auto && resolve ? resolve(scene) : scene);
+  if (std::string why; p.scene.images && !detail::pictures_available(&why))
+    p.warnings.push_back("output.images: no pictures will be drawn: " + why);
+  return p;
 }
 
 // The states a part starts from when it names no file.

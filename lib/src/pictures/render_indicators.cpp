@@ -12,9 +12,9 @@
 #include "arnoldweb/output.hpp"
 #include "arnoldweb/sphere.hpp"
 #include "aw_params.h"
-#include "output/canvas.hpp"
-#include "output/indicator_pictures.hpp"
-#include "output/sphere_view.hpp"
+#include "pictures/canvas.hpp"
+#include "pictures/indicator_pictures.hpp"
+#include "pictures/sphere_view.hpp"
 
 namespace arnoldweb::detail {
 namespace {

@@ -2,7 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "output/pictures.hpp"
+#include "pictures/drawing.hpp"
 
 namespace arnoldweb::detail {
 

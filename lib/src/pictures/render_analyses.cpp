@@ -14,9 +14,9 @@
 #include <cstdio>
 
 #include "aw_params.h"
-#include "output/analysis_files.hpp"
-#include "output/canvas.hpp"
-#include "output/indicator_pictures.hpp"
+#include "pictures/drawing.hpp"
+#include "pictures/canvas.hpp"
+#include "pictures/indicator_pictures.hpp"
 
 namespace arnoldweb::detail {
 namespace {

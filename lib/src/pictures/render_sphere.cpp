@@ -8,8 +8,8 @@
 
 #include "arnoldweb/output.hpp"
 #include "arnoldweb/sphere.hpp"
-#include "output/canvas.hpp"
-#include "output/sphere_view.hpp"
+#include "pictures/canvas.hpp"
+#include "pictures/sphere_view.hpp"
 
 namespace arnoldweb::detail {
 namespace {
@@ -158,9 +158,9 @@ void paint_mollweide(Canvas& c, double cx, double cy, double a, const std::funct
 
 }  // namespace arnoldweb::detail
 
-namespace arnoldweb {
+namespace arnoldweb::detail {
 
-void render_sphere_png(const std::string& path, const std::vector<std::uint64_t>& map, int nside,
+void draw_sphere_png(const std::string& path, const std::vector<std::uint64_t>& map, int nside,
                        const RenderOptions& o) {
   const int w = o.width, h = static_cast<int>(o.width * 0.82);
   detail::Canvas c(w, h);
@@ -177,8 +177,8 @@ void render_sphere_png(const std::string& path, const std::vector<std::uint64_t>
   c.save(path);
 }
 
-void render_mollweide_png(const std::string& path, const std::vector<std::uint64_t>& map, int nside,
-                          const RenderOptions& o) {
+void draw_mollweide_png(const std::string& path, const std::vector<std::uint64_t>& map, int nside,
+                        const RenderOptions& o) {
   const int w = o.width, h = static_cast<int>(o.width * 0.62);
   detail::Canvas c(w, h);
   const detail::LogScale scale(map);
@@ -193,4 +193,4 @@ void render_mollweide_png(const std::string& path, const std::vector<std::uint64
   c.save(path);
 }
 
-}  // namespace arnoldweb
+}  // namespace arnoldweb::detail

@@ -4,9 +4,9 @@
 #include <cstdio>
 
 #include "arnoldweb/sphere.hpp"
-#include "output/canvas.hpp"
-#include "output/pictures.hpp"
-#include "output/sphere_view.hpp"
+#include "pictures/canvas.hpp"
+#include "pictures/drawing.hpp"
+#include "pictures/sphere_view.hpp"
 
 namespace arnoldweb::detail {
 

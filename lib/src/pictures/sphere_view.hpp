@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "arnoldweb/sphere.hpp"
-#include "output/canvas.hpp"
+#include "pictures/canvas.hpp"
 
 namespace arnoldweb::detail {
 

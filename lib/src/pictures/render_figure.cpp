@@ -4,13 +4,13 @@
 #include <cstdio>
 
 #include "arnoldweb/output.hpp"
-#include "output/canvas.hpp"
-#include "output/sphere_view.hpp"
+#include "pictures/canvas.hpp"
+#include "pictures/sphere_view.hpp"
 
-namespace arnoldweb {
+namespace arnoldweb::detail {
 
-void render_figure_png(const std::string& path, const Plan& plan, const Result& result,
-                       const std::vector<FigurePanel>& panels, const RenderOptions& o) {
+void draw_figure_png(const std::string& path, const Plan& plan, const Result& result,
+                     const std::vector<FigurePanel>& panels, const RenderOptions& o) {
   const int h = static_cast<int>(o.width * 0.62), w = static_cast<int>(o.width * (panels.empty() ? 0.7 : 1.0));
   detail::Canvas c(w, h);
   const detail::LogScale scale(result.map);
@@ -54,4 +54,4 @@ void render_figure_png(const std::string& path, const Plan& plan, const Result& 
   c.save(path);
 }
 
-}  // namespace arnoldweb
+}  // namespace arnoldweb::detail

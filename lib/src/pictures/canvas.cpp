@@ -1,4 +1,4 @@
-#include "output/canvas.hpp"
+#include "pictures/canvas.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "arnoldweb/errors.hpp"
 #include "output/atomic_file.hpp"
-#include "output/pictures.hpp"
+#include "pictures/drawing.hpp"
 
 namespace arnoldweb::detail {
 
