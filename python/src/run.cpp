@@ -58,12 +58,14 @@ class PythonHook final : public arnoldweb::Progress, public arnoldweb::JobObserv
 
 // The plans' warnings (a step that will cost accuracy, ...) through Python's
 // warnings, as arnoldweb.PlanWarning, before anything is computed: a filter
-// that turns them into errors stops the run here.
-void warn_plans(const arnoldweb::Job& job) {
+// that turns them into errors stops the run here. A run that writes no
+// directory draws no pictures either: the warning that it cannot is left out.
+void warn_plans(const arnoldweb::Job& job, bool write) {
   nb::object warn = nb::module_::import_("warnings").attr("warn");
   nb::object category = nb::module_::import_("arnoldweb._errors").attr("PlanWarning");
   for (std::size_t k = 0; k < job.parts.size(); ++k)
     for (const std::string& w : job.parts[k].plan.warnings) {
+      if (!write && w.rfind("output.images:", 0) == 0) continue;
       const std::string text = k == 0 ? w : "panel " + job.parts[k].name + ": " + w;
       warn(nb::str(text.data(), text.size()), category, 2);  // stacklevel 2: the caller of arnoldweb.run
     }
@@ -82,7 +84,7 @@ std::shared_ptr<RunRecord> run_scene(const arnoldweb::Scene& scene, nb::object p
   }
   record->job = plan_scene(s, std::move(initial));
   const arnoldweb::Job& job = record->job;
-  warn_plans(job);
+  warn_plans(job, write);
   arnoldweb::OutputOptions output;
   PythonHook hook(std::move(progress));
   {

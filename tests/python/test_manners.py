@@ -1,6 +1,7 @@
 """Python manners (issue 28): warnings, Scene as a mapping, messages in Python's words, integer
 arrays, one last progress call, shipped scenes, python -m arnoldweb, extras, a clean namespace."""
 import copy
+import os
 import subprocess
 import sys
 import warnings
@@ -134,3 +135,28 @@ def test_namespace_is_clean():
     public = {n for n in dir(aw) if not n.startswith("_")}
     assert public <= set(aw.__all__), public - set(aw.__all__)
     assert set(aw.__all__) <= set(dir(aw))
+
+
+def test_without_the_pictures_plugin_import_and_run_work_and_say_why(tmp_path):
+    # as on a machine without cairo's X11 libraries (the GPU machine's image lacks libXrender):
+    # the package imports, runs write their numbers, and a run that writes says why it drew no
+    # pictures; one that writes nothing warns nothing
+    code = f"""
+import os, warnings, arnoldweb as aw
+scene = aw.Scene.from_dict({small_dict(output={"images": True})!r})
+with warnings.catch_warnings():
+    warnings.simplefilter("error")
+    aw.run(scene)
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    aw.run(scene, out={str(tmp_path / "out")!r})
+print("WARN", [str(w.message) for w in caught if issubclass(w.category, aw.PlanWarning)])
+print("FILES", sorted(os.listdir({str(tmp_path / "out")!r})))
+"""
+    env = dict(os.environ, ARNOLDWEB_PICTURES=str(tmp_path / "gone" / "libarnoldweb_pictures.so"))
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env)
+    assert done.returncode == 0, done.stderr
+    warned = [line for line in done.stdout.splitlines() if line.startswith("WARN")][0]
+    assert "no pictures will be drawn" in warned and "gone/libarnoldweb_pictures.so" in warned
+    files = [line for line in done.stdout.splitlines() if line.startswith("FILES")][0]
+    assert "map.h5" in files and "summary.json" in files and ".png" not in files
