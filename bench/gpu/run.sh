@@ -105,7 +105,7 @@ if [ "$mode" = science ]; then
   CUDA0=$(first_cuda)
   nproc; grep -m1 "model name" /proc/cpuinfo; nvidia-smi --query-gpu=name,driver_version --format=csv,noheader
   stamp "issue 25 and 26 measurements (bench/gpu/science.sh) on $CUDA0"
-  timeout 330 bash bench/gpu/science.sh build-gpu/arnoldweb "$CUDA0" "$OUT/science"
+  timeout "${AW_SCIENCE_TIMEOUT:-330}" bash bench/gpu/science.sh build-gpu/arnoldweb "$CUDA0" "$OUT/science"
   (cd "$OUT" && tar czf science.tgz science && rm -rf science)
   if [ -f bench/gpu/rates.sh ] && [ -n "${AW_SCIENCE_RATES:-}" ]; then
     stamp "issue 29's GPU rows (bench/gpu/rates.sh, one round)"

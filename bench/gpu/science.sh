@@ -6,7 +6,8 @@
 #    frequency map (scenes/fgl_frequency_map.toml, 1024^2, FLI + frequencies) against its FLI alone;
 #    its pictures (frequency_map.png, diffusion_index.png, fli.png) are kept for docs/gallery.md;
 # 2. the D(eps) scan of scenes/fgl_diffusion.toml, shortened to AW_DSCAN_T (default 1e5 T) per eps,
-#    for the values of AW_DSCAN_EPS; each run's summary.json, diffusion.csv and diffusion.png kept
+#    for the values of AW_DSCAN_EPS on a grid of AW_DSCAN_RES^2 (default 362^2) trajectories, each
+#    sample the mean of the actions over its interval; each run's summary.json, diffusion.csv and diffusion.png kept
 #    (bench/gpu/d_eps_fit.py fits D(eps) from them);
 # 3. a sliced long run (scenes/fig4_diffusion.toml at N = 32,768 to AW_FIG4_T, run.slice), once in
 #    one piece and once killed with kill -9 and resumed (twice), with both runs' digests.
@@ -68,10 +69,12 @@ echo "== 2. the D(eps) scan (scenes/fgl_diffusion.toml, ${AW_DSCAN_T:=100000} T 
 T=$AW_DSCAN_T
 every=$(python3 -c "print($T / 100)")
 fit=$(python3 -c "print($T / 10)")
+res=${AW_DSCAN_RES:-362}   # the grid: res x res trajectories
 for eps in ${AW_DSCAN_EPS:-0.006 0.008 0.010 0.012 0.015 0.020}; do
   o="$tmp/ds_$eps"
   run "dscan_$eps" "$o" scenes/fgl_diffusion.toml --set model.epsilon="$eps" --set run.duration="$T" \
     --set run.average="$T" --set observe.diffusion.every="$every" --set observe.diffusion.fit_from="$fit" \
+    --set observe.diffusion.average="$every" --set "ensemble.grid.resolution=[$res, $res]" \
     --set observe.energy_error.every="$every" --set observe.final_states=false &&
     for f in diffusion.csv diffusion.png; do [ -f "$o/$f" ] && cp "$o/$f" "$OUTDIR/dscan_$eps/"; done
   rm -rf "$o"

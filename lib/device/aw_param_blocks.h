@@ -73,6 +73,7 @@ typedef struct {
   real grid_lo[2], grid_width[2]; /* plane: momentum ranges; lonlat: lon, lat ranges in turns */
   real grid_fixed;      /* plane: the third momentum */
   real frequency_every; /* T between two frequency samples */
+  real diffusion_average_weight; /* 1 / the actions averaged into a sample (effects/aw_fx_diffusion.h) */
 } aw_rparams;
 
 /* --------------------------------------------------- integer parameters */
@@ -98,6 +99,8 @@ typedef struct {
   aw_i64 frequency_order;   /* p of Laskar's window chi_p */
   aw_i64 diffusion_stride;  /* segments between action samples */
   aw_i64 diffusion_samples; /* K: action samples after t = 0 */
+  aw_i64 diffusion_average_points; /* actions averaged into a sample (0: the actions at the sample time) */
+  aw_i64 diffusion_average_stride; /* segments between two of them */
   /* per-trajectory work memory in the series buffer (AW_BUFFERS): series_reals
    * reals per trajectory, element e of trajectory rec at series[e * series_stride + rec]
    * (series_stride: the trajectories a launch holds; the backend sets it) */

@@ -260,6 +260,63 @@ TEST_SUITE("frequency-runs") {
     }
   }
 
+  TEST_CASE("diffusion with averaging: each sample is the mean of the actions at its points, in slices or not") {
+    // the points of sample q: q D - j a, j = 0 .. m - 1, here D = 2.56 T, a = 0.32 T, m = 4
+    const std::vector<std::string> base = {"model.epsilon=0.02", "observe.frequencies=false",
+                                           "ensemble.grid.range1=[0.29, 0.31]", "ensemble.grid.range2=[0.29, 0.31]"};
+    auto with = [&](std::vector<std::string> extra) {
+      std::vector<std::string> sets = base;
+      sets.insert(sets.end(), extra.begin(), extra.end());
+      return make_plan(fgl_scene(sets));
+    };
+    const Plan fine = with({"observe.diffusion={ every = 0.32, along = [1, 1, 0], across = [1, -1, 0] }"});
+    const Plan averaged = with({"observe.diffusion={ every = 2.56, along = [1, 1, 0], across = [1, -1, 0], "
+                                "fit_from = 10.24, average = 1.28, average_every = 0.32 }"});
+    for (const auto& device : awtest::devices_under_test()) {
+      CAPTURE(device.id);
+      const Result f = awtest::run_on(device.id, fine);
+      const Result a = awtest::run_on(device.id, averaged);
+      const Records* rf = f.records_of("actions");
+      const Records* ra = a.records_of("actions");
+      REQUIRE(rf != nullptr);
+      REQUIRE(ra != nullptr);
+      REQUIRE(rf->reals_per == 3 * 129);  // every 0.32 T to 40.96 T
+      REQUIRE(ra->reals_per == 3 * 17);
+      for (std::size_t t = 0; t < 48; ++t)
+        for (int c = 0; c < 3; ++c) {
+          const double* fr = rf->reals.data() + t * rf->reals_per;
+          const double* ar = ra->reals.data() + t * ra->reals_per;
+          CHECK(ar[c] == fr[c]);  // t = 0: the initial action itself
+          for (int q = 1; q <= 16; ++q) {
+            double sum = 0;  // in the device's order: the earliest point first
+            for (int j = 3; j >= 0; --j) sum += fr[3 * (8 * q - j) + c];
+            CHECK(ar[3 * q + c] == sum * 0.25);
+          }
+        }
+      // the same bits in time slices that end at sample times
+      const Plan sliced = with({"observe.diffusion={ every = 2.56, along = [1, 1, 0], across = [1, -1, 0], "
+                                "fit_from = 10.24, average = 1.28, average_every = 0.32 }",
+                                "run.slice=10.24"});
+      CHECK(awtest::first_difference(awtest::run_on(device.id, sliced).reals("actions"), a.reals("actions")) == -1);
+      // the analysis starts at the first mean (t = 2.56), not at the instantaneous t = 0
+      const nlohmann::json j = nlohmann::json::parse(a.analyses.at("diffusion"));
+      CHECK(j["moments"]["t"].size() == 16);
+      CHECK(j["moments"]["t"][0] == 2.56);
+      CHECK(j["moments"]["along_variance"][0] == 0.0);
+      CHECK(j["average"] == 1.28);
+      ActionSamples s;
+      s.trajectories = 48;
+      s.times = 16;
+      for (int k = 1; k <= 16; ++k) s.t.push_back(2.56 * k);
+      for (std::size_t t = 0; t < 48; ++t)
+        s.actions.insert(s.actions.end(), ra->reals.begin() + static_cast<std::ptrdiff_t>(t * ra->reals_per + 3),
+                         ra->reals.begin() + static_cast<std::ptrdiff_t>((t + 1) * ra->reals_per));
+      DiffusionOptions o;
+      o.t_min = 10.24;
+      CHECK(j["along_fit"]["D"].get<double>() == fit_diffusion(s, {1, 1, 0}, o).D);
+    }
+  }
+
   TEST_CASE("diffusion: the plan's checks name the key and the bound") {
     const std::string on = "observe.diffusion={ every = 2.56, along = [1, 1, 0], across = [1, -1, 0] }";
     CHECK_THROWS_WITH_AS(make_plan(fgl_scene({on, "observe.diffusion.every=3"})), doctest::Contains("observe.diffusion.every"),
@@ -268,5 +325,15 @@ TEST_SUITE("frequency-runs") {
                          doctest::Contains("observe.diffusion.across"), SceneError);
     CHECK_THROWS_WITH_AS(make_plan(fgl_scene({on, "observe.diffusion.fit_from=50"})),
                          doctest::Contains("observe.diffusion.fit_from"), SceneError);
+    // averaging: a span that holds whole intervals, no longer than the sample interval, slices at sample times
+    CHECK_THROWS_WITH_AS(make_plan(fgl_scene({on, "observe.diffusion.average=1.28", "observe.diffusion.average_every=0.5"})),
+                         doctest::Contains("observe.diffusion.average_every"), SceneError);
+    CHECK_THROWS_WITH_AS(make_plan(fgl_scene({on, "observe.diffusion.average=5.12", "observe.diffusion.average_every=0.32"})),
+                         doctest::Contains("observe.diffusion.average"), SceneError);
+    CHECK_THROWS_WITH_AS(make_plan(fgl_scene({on, "observe.frequencies=false", "observe.diffusion.average=1.28",
+                                              "observe.diffusion.average_every=0.32", "run.slice=1.28"})),
+                         doctest::Contains("run.slice"), SceneError);
+    CHECK_NOTHROW(make_plan(fgl_scene({on, "observe.frequencies=false", "observe.diffusion.average=1.28",
+                                       "observe.diffusion.average_every=0.32", "run.slice=5.12"})));
   }
 }

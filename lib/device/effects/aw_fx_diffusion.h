@@ -5,24 +5,57 @@
  * the actions I; for the paper's model the momenta, its free actions).
  * The record (AW_OUT_ACTIONS): 3 (K + 1) reals, P at t = 0 and at the end of
  * every ip->diffusion_stride segments (K = ip->diffusion_samples), and one
- * integer, the trajectory's status at the end (a flagged one is left out). */
+ * integer, the trajectory's status at the end (a flagged one is left out).
+ * With averaging (ip->diffusion_average_points m > 0) sample q >= 1 is the
+ * mean of the actions at the m segment ends q D - j a, j = 0 .. m - 1 (D =
+ * ip->diffusion_stride, a = ip->diffusion_average_stride, m a <= D): the
+ * fast oscillations and the libration in a resonance average out. The sum
+ * restarts at every sample, so a time slice that ends at a sample time
+ * carries nothing (the planner asks for that). */
 #ifndef AW_FX_DIFFUSION_H
 #define AW_FX_DIFFUSION_H
 
 #include "effects/aw_fx_common.h"
 
-/* Sample q (0: the start) of the lanes' momenta. */
-AW_FN void aw_actions_store(const aw_lstate* s, aw_i64 q, aw_lanes l, AW_CONSTANT aw_iparams* ip, aw_outputs out) {
+/* Sample q (0: the start) of the lanes' actions (x, y, z). */
+AW_FN void aw_actions_store(lreal x, lreal y, lreal z, aw_i64 q, aw_lanes l, AW_CONSTANT aw_iparams* ip,
+                            aw_outputs out) {
   real px[AW_LANES], py[AW_LANES], pz[AW_LANES];
-  AW_STORE_LANES(s->px, px);
-  AW_STORE_LANES(s->py, py);
-  AW_STORE_LANES(s->pz, pz);
+  AW_STORE_LANES(x, px);
+  AW_STORE_LANES(y, py);
+  AW_STORE_LANES(z, pz);
   for (int j = 0; j < AW_LANES; ++j) {
     if (!AW_LANE_ACTIVE(l, j)) continue;
     AW_GLOBAL real* r = aw_record_r(out, ip, AW_OUT_ACTIONS, AW_LANE_RECORD(l, j)) + 3 * q;
     r[0] = px[j];
     r[1] = py[j];
     r[2] = pz[j];
+  }
+}
+
+/* After segment k (0-based): the sample due at its end, or (averaging) the
+ * actions added to the running sum `asum` when its end is one of the next
+ * sample's points, and the mean stored at the sample. */
+AW_FN void aw_actions_sample(lreal* asum, const aw_lstate* s, aw_i64 k, aw_lanes l, AW_CONSTANT aw_rparams* rp,
+                             AW_CONSTANT aw_iparams* ip, aw_outputs out) {
+  aw_i64 r;
+  const aw_i64 q = aw_divrem(k + 1, ip->diffusion_stride, &r);
+  if (ip->diffusion_average_points == 0) {
+    if (r == 0 && q <= ip->diffusion_samples) aw_actions_store(s->px, s->py, s->pz, q, l, ip, out);
+    return;
+  }
+  const aw_i64 ahead = r == 0 ? 0 : ip->diffusion_stride - r; /* segments to the next sample */
+  aw_i64 off;
+  const aw_i64 j = aw_divrem(ahead, ip->diffusion_average_stride, &off);
+  if (off == 0 && j < ip->diffusion_average_points) {
+    asum[0] = asum[0] + s->px;
+    asum[1] = asum[1] + s->py;
+    asum[2] = asum[2] + s->pz;
+  }
+  if (r == 0 && q >= 1 && q <= ip->diffusion_samples) {
+    const real w = rp->diffusion_average_weight;
+    aw_actions_store(asum[0] * w, asum[1] * w, asum[2] * w, q, l, ip, out);
+    for (int c = 0; c < 3; ++c) asum[c] = AW_LSPLAT(AW_R(0.0));
   }
 }
 

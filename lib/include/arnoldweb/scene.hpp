@@ -141,6 +141,10 @@ struct Scene {
   std::array<double, 3> diffusion_along = {1, 1, 0};
   std::array<double, 3> diffusion_across = {1, -1, 0};
   double diffusion_fit_from = 0;
+  // each sample the mean of the actions over the last `average` T, taken
+  // every `average_every` T (0: the actions at the sample time)
+  double diffusion_average = 0;
+  double diffusion_average_every = 1.0;
 
   // [output]
   std::string output_dir = "out";

@@ -38,6 +38,22 @@ void plan_analysis(const Scene& scene, const Plan& p) {
     const double nc = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
     if (std::fabs(dot) > (1 - 1e-9) * na * nc)
       fail_at(scene, "observe.diffusion.across", "is parallel to observe.diffusion.along: choose a direction across it");
+    if (scene.diffusion_average > 0) {
+      const std::int64_t points = exact_ratio(scene.diffusion_average, scene.diffusion_average_every);
+      if (points == 0)
+        fail_at(scene, "observe.diffusion.average_every",
+                fmt(scene.diffusion_average_every) + " T does not divide observe.diffusion.average = " +
+                    fmt(scene.diffusion_average) + " T");
+      if (scene.diffusion_average > scene.diffusion_every)
+        fail_at(scene, "observe.diffusion.average",
+                fmt(scene.diffusion_average) + " T is longer than the sample interval observe.diffusion.every = " +
+                    fmt(scene.diffusion_every) + " T: the spans of two samples would overlap");
+      if (p.slices > 1 && p.slice_segments % p.diffusion_stride != 0)
+        fail_at(scene, "run.slice",
+                "with observe.diffusion.average a time slice ends at a sample time: run.slice = " +
+                    fmt(scene.slice) + " T must be a multiple of observe.diffusion.every = " +
+                    fmt(scene.diffusion_every) + " T");
+    }
     if (!(scene.diffusion_fit_from < scene.duration))
       fail_at(scene, "observe.diffusion.fit_from",
               fmt(scene.diffusion_fit_from) + " T is not before the end of the run (run.duration = " +
@@ -55,10 +71,15 @@ void fill_analysis_ints(const Scene& scene, const Plan& p, IntParams& ip) {
     ip.series_reals = 6 * static_cast<std::int64_t>(scene.frequency_samples);  // a window: 3 angles, re and im
   }
   if (scene.diffusion) ip.diffusion_samples = exact_ratio(scene.duration, scene.diffusion_every);
+  ip.diffusion_average_stride = p.diffusion_average_stride;
+  ip.diffusion_average_points =
+      scene.diffusion && scene.diffusion_average > 0 ? exact_ratio(scene.diffusion_average, scene.diffusion_average_every) : 0;
 }
 
 void fill_analysis_reals(const Scene& scene, RealParams& rp) {
   if (scene.frequencies) rp.frequency_every = scene.frequency_every;
+  if (scene.diffusion && scene.diffusion_average > 0)
+    rp.diffusion_average_weight = 1.0 / static_cast<double>(exact_ratio(scene.diffusion_average, scene.diffusion_average_every));
 }
 
 }  // namespace arnoldweb::detail

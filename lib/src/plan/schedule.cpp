@@ -75,6 +75,9 @@ void plan_schedule(const Scene& scene, Plan& p) {
   const char* unit_key = energy ? "observe.energy_error.every" : "run.average";
   if (scene.frequencies && scene.frequency_every < unit) unit = scene.frequency_every, unit_key = "observe.frequencies.every";
   if (scene.diffusion && scene.diffusion_every < unit) unit = scene.diffusion_every, unit_key = "observe.diffusion.every";
+  const bool averaged = scene.diffusion && scene.diffusion_average > 0;
+  if (averaged && scene.diffusion_average_every < unit)
+    unit = scene.diffusion_average_every, unit_key = "observe.diffusion.average_every";
   p.segments_per_window = exact_ratio(scene.average, unit);
   const std::int64_t seg_steps = exact_ratio(unit, p.step);
   if (p.segments_per_window == 0 || seg_steps == 0 || seg_steps * p.segments_per_window != per_window) {
@@ -99,6 +102,7 @@ void plan_schedule(const Scene& scene, Plan& p) {
   p.energy_stride = energy ? stride(scene.energy_every, "observe.energy_error.every") : 1;
   p.frequency_stride = scene.frequencies ? stride(scene.frequency_every, "observe.frequencies.every") : 1;
   p.diffusion_stride = scene.diffusion ? stride(scene.diffusion_every, "observe.diffusion.every") : 1;
+  p.diffusion_average_stride = averaged ? stride(scene.diffusion_average_every, "observe.diffusion.average_every") : 1;
   p.steps_per_trajectory = p.windows * per_window;
   plan_slices(scene, p);
   p.trajectory_steps = static_cast<double>(scene.trajectories) * static_cast<double>(p.steps_per_trajectory);

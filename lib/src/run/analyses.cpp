@@ -29,16 +29,23 @@ json fit_json(const DiffusionFit& f) {
 }
 
 // The actions of the trajectories that ended with status ok, at t_k = k every.
+// Averaged samples (observe.diffusion.average) start at t_1: the record at
+// t = 0 is the instantaneous action, not a mean, and is left out, so that the
+// displacements are between means.
 ActionSamples samples_of(const Plan& plan, const Records& rec) {
   ActionSamples s;
   s.dim = 3;
-  s.times = rec.reals_per / 3;
-  for (std::size_t k = 0; k < s.times; ++k) s.t.push_back(plan.start_time() + static_cast<double>(k) * plan.scene.diffusion_every);
+  const std::size_t first = plan.scene.diffusion_average > 0 ? 1 : 0;
+  const std::size_t records = rec.reals_per / 3;
+  s.times = records > first ? records - first : 0;
+  for (std::size_t k = first; k < records; ++k)
+    s.t.push_back(plan.start_time() + static_cast<double>(k) * plan.scene.diffusion_every);
   const std::uint64_t n = rec.count();
   for (std::uint64_t i = 0; i < n; ++i) {
     if (rec.ints[i * rec.ints_per] != AW_STATUS_OK) continue;
-    s.actions.insert(s.actions.end(), rec.reals.begin() + static_cast<std::ptrdiff_t>(i * rec.reals_per),
-                     rec.reals.begin() + static_cast<std::ptrdiff_t>((i + 1) * rec.reals_per));
+    const auto row = rec.reals.begin() + static_cast<std::ptrdiff_t>(i * rec.reals_per);
+    s.actions.insert(s.actions.end(), row + static_cast<std::ptrdiff_t>(3 * first),
+                     row + static_cast<std::ptrdiff_t>(rec.reals_per));
     ++s.trajectories;
   }
   return s;
@@ -53,6 +60,8 @@ json diffusion(const Plan& plan, const Records& rec) {
             {"along", along},
             {"across", across},
             {"fit_from", sc.diffusion_fit_from},
+            {"average", sc.diffusion_average},
+            {"average_every", sc.diffusion_average_every},
             {"flagged", rec.count() - s.trajectories},
             {"definition", "Var[e . dI](t) = sigma0^2 + 2 D t by least squares over t >= fit_from; D in action^2 per "
                            "T; error: bootstrap over trajectories"}};

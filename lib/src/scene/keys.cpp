@@ -601,12 +601,18 @@ void analysis_keys(Rows& add) {
   add("observe.frequencies.window", "integer", "0 to 4", "an integer from 0 to 4", integer_of(&Scene::frequency_window),
       integer_into(&Scene::frequency_window, [](std::int64_t v) { return v >= 0 && v <= 4; }),
       "Order p of Laskar's window chi_p (1: Hanning, frequency error ~ 1/T^4; 2: ~ 1/T^6; 0: none).");
-  add("observe.diffusion", "table or boolean", "{ every = T, along = [..], across = [..], fit_from = T }, true or false",
-      "a table { every = <T>, along = [a, b, c], across = [a, b, c], fit_from = <T> }, true or false",
+  add("observe.diffusion", "table or boolean",
+      "{ every = T, along = [..], across = [..], fit_from = T, average = T, average_every = T }, true or false",
+      "a table { every = <T>, along = [a, b, c], across = [a, b, c], fit_from = <T>, average = <T>, average_every = <T> }, true or false",
       [](const Scene& s) {
         return s.diffusion ? "{ every = " + toml_double(s.diffusion_every) + ", along = " +
                                  triple_literal(s.diffusion_along) + ", across = " + triple_literal(s.diffusion_across) +
-                                 ", fit_from = " + toml_double(s.diffusion_fit_from) + " }"
+                                 ", fit_from = " + toml_double(s.diffusion_fit_from) +
+                                 (s.diffusion_average > 0 ? ", average = " + toml_double(s.diffusion_average) +
+                                                                ", average_every = " +
+                                                                toml_double(s.diffusion_average_every)
+                                                          : std::string()) +
+                                 " }"
                            : boolean(false);
       },
       switch_into(&Scene::diffusion, true),
@@ -627,6 +633,16 @@ void analysis_keys(Rows& add) {
       real_of(&Scene::diffusion_fit_from),
       real_into(&Scene::diffusion_fit_from, [](double v) { return v >= 0; }),
       "The fit of the variance's growth starts at this time, in T (after the first fast oscillations).");
+  add("observe.diffusion.average", "float", ">= 0, at most observe.diffusion.every",
+      "a finite float >= 0 (in units of T)", real_of(&Scene::diffusion_average),
+      real_into(&Scene::diffusion_average, [](double v) { return v >= 0; }),
+      "Each sample after t = 0 is the mean of the actions over the last `average` T, taken every "
+      "observe.diffusion.average_every T: the fast oscillations and the libration in the resonance average out, "
+      "and D is fitted to the spreading of the means (0: the actions at the sample times).");
+  add("observe.diffusion.average_every", "float", "> 0, divides observe.diffusion.average",
+      "a finite float greater than 0 (in units of T)", real_of(&Scene::diffusion_average_every),
+      real_into(&Scene::diffusion_average_every, positive),
+      "Interval between the actions averaged into a sample, in T (a multiple of integrator.step).");
 }
 
 void output_keys(Rows& add) {
