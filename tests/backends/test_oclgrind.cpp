@@ -152,6 +152,15 @@ std::vector<Variant> variants() {
                  s.diffusion = true;
                  s.diffusion_every = 0.04;
                }});
+  // the actions averaged over each sample's span, in time slices (the running sum starts again in each slice)
+  v.push_back({"diffusion averaged, in time slices", [](Scene& s) {
+                 s.duration = s.average = 0.64;
+                 s.diffusion = true;
+                 s.diffusion_every = 0.08;
+                 s.diffusion_average = 0.08;
+                 s.diffusion_average_every = 0.02;
+                 s.slice = 0.16;
+               }});
   v.push_back({"native math", [](Scene& s) { s.math = MathMode::Native; }, nullptr, false});
   return v;
 }

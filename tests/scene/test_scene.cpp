@@ -178,6 +178,8 @@ const char* kFullSceneFixed =
     "along = [1, 2, 0]\n"
     "across = [2, -1, 0]\n"
     "fit_from = 100\n"
+    "average = 10.0\n"
+    "average_every = 0.5\n"
     "[ensemble.grid]\n"
     "kind = \"plane\"\n"
     "nside = 32\n"
@@ -298,6 +300,8 @@ TEST_SUITE("scene") {
     CHECK(s.diffusion_along == std::array<double, 3>{1, 2, 0});
     CHECK(s.diffusion_across == std::array<double, 3>{2, -1, 0});
     CHECK(s.diffusion_fit_from == 100);
+    CHECK(s.diffusion_average == 10.0);
+    CHECK(s.diffusion_average_every == 0.5);
     CHECK(s.grid_kind == "plane");
     CHECK(s.grid_nside == 32);
     CHECK(s.grid_resolution == std::array<double, 2>{128, 256});

@@ -116,6 +116,9 @@ AW_FN void aw_carry_load(aw_lstate* s, aw_fx* fx, aw_window_start* ws, aw_output
   t->steps = 0;
   for (int j = 0; j < AW_LANES; ++j)
     if (AW_LANE_ACTIVE(l, j)) t->steps = aw_record_i(out, ip, AW_OUT_CARRY, AW_LANE_RECORD(l, j))[AW_CARRY_INTS - 1];
+  /* the diffusion's running mean restarts at every sample, and with averaging
+   * a slice ends at a sample time (the planner's rule): nothing to carry */
+  for (int c = 0; c < 3; ++c) fx->asum[c] = AW_LSPLAT(AW_R(0.0));
 }
 
 #endif /* AW_FX_CARRY_H */
