@@ -43,13 +43,16 @@ def fit_line(xs, ys, ws):
     return p, q, chi2
 
 
-def fit_law(rows, fixed_a=None):
+def fit_law(rows, fixed_a=None, weighted=True):
     # resolved coefficients only: D above three bootstrap errors
     good = [r for r in rows if r["along"]["D"] > 3 * r["along"]["D_error"] > 0]
     if len(good) < 3:
         return None
     ys = [math.log(r["along"]["D"]) for r in good]
-    ws = [(r["along"]["D"] / r["along"]["D_error"]) ** 2 for r in good]  # 1 / var(log D)
+    # 1 / var(log D) from the bootstrap, or equal weights (when the scatter between
+    # neighbouring eps is far above the bootstrap errors: then chi2 / (n - 2) is the
+    # variance of ln D about the law)
+    ws = [(r["along"]["D"] / r["along"]["D_error"]) ** 2 if weighted else 1.0 for r in good]
     best = None
     grid = [fixed_a] if fixed_a else [0.05 + (1.5 - 0.05) * (i - 1) / 299 for i in range(1, 301)]
     for a in grid:
@@ -112,8 +115,15 @@ def main():
     fixed = fit_law(rows, 0.25)
     print(f"fit at a = 0.25 (the exponent Efthymiopoulos & Harsoula report): c = {fixed['c']:.4g}, "
           f"D0 = {math.exp(fixed['logD0']):.3e}, chi2 = {fixed['chi2']:.3g} ({fixed['n'] - 2} degrees of freedom)")
+    print("\nequal weights in ln D (the scatter between neighbouring eps, not the bootstrap, sets the error):")
+    print("| a | c | D0 | rms of ln D about the law |")
+    print("|---|---|---|---|")
+    for a in (0.1, 0.21, 0.25, 0.5, 1.0, 2.0):
+        f = fit_law(rows, a, weighted=False)
+        print(f"| {a:g} | {f['c']:.3g} | {math.exp(f['logD0']):.3g} | {math.sqrt(f['chi2'] / (f['n'] - 2)):.3f} |")
     if len(sys.argv) > 2:
-        svg([r for r in rows if r["along"]["D"] > 3 * r["along"]["D_error"] > 0], law, sys.argv[2])
+        shown = fit_law(rows, 0.25, weighted=False)
+        svg([r for r in rows if r["along"]["D"] > 3 * r["along"]["D_error"] > 0], shown, sys.argv[2])
 
 
 if __name__ == "__main__":
