@@ -21,7 +21,7 @@ _INDICATOR_DTYPE = np.dtype([(n, np.float64) for n in INDICATOR_NAMES])
 
 
 class Lazy:
-    """A value read when first asked for (a loaded result's states.h5, indicators.h5)."""
+    """A value read when first asked for (a loaded result's states.h5, indicators.h5, outputs)."""
 
     def __init__(self, make):
         self.make = make
@@ -29,7 +29,7 @@ class Lazy:
 
 #: What a Result keeps when it is pickled, copied or loaded (arnoldweb.load): its public
 #: values, so that a pickle does not depend on the library's internal arrays.
-SAVED_FIELDS = ("map", "nside", "frames", "zoom", "states", "indicators", "counters", "energy", "interrupted",
+SAVED_FIELDS = ("map", "nside", "frames", "zoom", "states", "indicators", "outputs", "counters", "energy", "interrupted",
                 "digests", "device", "wall_seconds", "rate", "summary", "name", "title")
 
 

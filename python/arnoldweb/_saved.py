@@ -54,6 +54,31 @@ def _indicators(path: str) -> Optional[np.ndarray]:
     return table
 
 
+def _outputs(folder: str, files: list) -> dict:
+    """Every per-trajectory output in the directory's HDF5 files, as Result.outputs gives a run's:
+    {output: {dataset: array}}, read with h5py from the checked bytes of each file."""
+    out: dict = {}
+    opened: dict = {}
+    try:
+        for row in _core._output_locations():
+            if row["file"] not in files:
+                continue
+            if row["file"] not in opened:
+                path = os.path.join(folder, row["file"])
+                opened[row["file"]] = _h5py(path).File(_checked(path), "r")
+            f = opened[row["file"]]
+            if row["group"] and row["group"] not in f:
+                continue
+            where = f[row["group"]] if row["group"] else f
+            found = {name: where[name][()] for name in row["datasets"] if name in where}
+            if found:
+                out[row["output"]] = found
+    finally:
+        for f in opened.values():
+            f.close()
+    return out
+
+
 def _lazy(path: str, read: Callable[[str], Any]) -> Any:
     """read(path) when the value is first asked for (h5py only then), None without the file."""
     return Lazy(lambda: read(path)) if os.path.exists(path) else None
@@ -84,6 +109,7 @@ def _part(folder: str, name: str, title: str) -> dict:
         "map": maps["map"], "nside": maps["nside"], "frames": maps["frames"], "zoom": maps["zoom"],
         "states": _lazy(os.path.join(folder, "states.h5"), _states),
         "indicators": _lazy(os.path.join(folder, "indicators.h5"), _indicators),
+        "outputs": Lazy(lambda: _outputs(folder, summary.get("files", []))),
         "counters": np.array(tuple(counts[n] for n in COUNTER_NAMES), dtype=_COUNTER_DTYPE),
         "energy": energy,
         "interrupted": bool(summary.get("interrupted", False)),
@@ -98,8 +124,9 @@ def _part(folder: str, name: str, title: str) -> dict:
 def load(out_dir: "str | os.PathLike[str]") -> Result:
     """The :class:`Result` of a run's output directory (written by ``arnoldweb run --out`` or
     :func:`arnoldweb.run` with ``out``): map, frames and zoom (read by the library, the map
-    checked against the digest in summary.json), states and indicators (from states.h5 and
-    indicators.h5, read with h5py when first asked for), counters, energy, digests, device and
+    checked against the digest in summary.json), states, indicators and every per-trajectory
+    output (:attr:`Result.outputs`: states.h5, indicators.h5, frequencies.h5, diffusion.h5, read
+    with h5py when first asked for), counters, energy, digests, device and
     summary, and the panels (panel-<name>/). Every file is read as ``arnoldweb render`` reads it:
     a plain file, checked against the size and digest summary.json records for it. Raises
     OutputError naming a missing, unreadable, damaged or changed file. A loaded Result pickles; it cannot be written again (its files are there)."""

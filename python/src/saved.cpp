@@ -47,6 +47,22 @@ nb::dict read_maps(const std::string& dir) {
 
 void bind_saved(nb::module_& m) {
   m.def(
+      "_output_locations",
+      [] {
+        nb::list out;
+        for (const arnoldweb::OutputLocation& o : arnoldweb::output_locations()) {
+          nb::dict d;
+          d["output"] = o.output;
+          d["file"] = o.file;
+          d["group"] = o.group;
+          d["datasets"] = o.datasets;
+          out.append(d);
+        }
+        return out;
+      },
+      "Where each per-trajectory output can be in a run's directory (the output table): "
+      "[{output, file, group, datasets}].");
+  m.def(
       "read_saved_summary", [](const std::string& dir) { return json_loads(arnoldweb::read_saved_summary(dir)); },
       nb::arg("dir"),
       "summary.json of an output directory, read and checked as render and compare read it "

@@ -35,7 +35,7 @@ def full_result():
     return aw.run(aw.Scene.from_dict(d))
 
 
-FIELDS = ("map", "frames", "zoom", "states", "indicators", "counters", "digests", "device", "nside", "name")
+FIELDS = ("map", "frames", "zoom", "states", "indicators", "outputs", "counters", "digests", "device", "nside", "name")
 
 
 def test_scene_pickles_and_deep_copies(small_scene):
@@ -89,6 +89,23 @@ def test_load_gives_the_saved_run(full_result, tmp_path):
     assert back.panels["hot"].binned == r.panels["hot"].binned
     assert_same_arrays(back.panels["hot"].map, r.panels["hot"].map)
     assert_same_arrays(pickle.loads(pickle.dumps(back)).map, r.map)
+
+
+def test_load_gives_every_output_back(tmp_path):
+    # frequencies.h5, diffusion.h5, indicators.h5 and states.h5 of an fgl grid: Result.outputs of
+    # the loaded directory (and of a pickle of it) equal the run's, dataset for dataset
+    scene = aw.scene("fgl_frequency_map").set("ensemble.grid.resolution", [6, 5]).set("output.images", False)
+    scene.set("observe.diffusion", {"every": 40.96, "along": [1, 1, 0], "across": [1, -1, 0]})
+    scene.set("observe.final_states", True).set("run.device", "cpu")
+    r = aw.run(scene, out=tmp_path / "run")
+    assert {"frequencies", "actions", "indicators", "final_states"} <= set(r.outputs)
+    for back in (aw.load(tmp_path / "run"), pickle.loads(pickle.dumps(aw.load(tmp_path / "run")))):
+        assert back.outputs.keys() == r.outputs.keys()
+        for name, datasets in r.outputs.items():
+            assert back.outputs[name].keys() == datasets.keys(), name
+            for k, v in datasets.items():
+                np.testing.assert_array_equal(back.outputs[name][k], v)
+                assert back.outputs[name][k].shape == v.shape
 
 
 def test_load_checks_the_digest_and_names_bad_files(small_scene, tmp_path):

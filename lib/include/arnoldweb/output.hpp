@@ -127,6 +127,14 @@ std::vector<OutputDataset> output_datasets(const Plan& plan, const Result& resul
 void write_records_hdf5(const std::string& path, const std::string& file, const Plan& plan, const Result& result);
 // The files the result's per-trajectory outputs go into, in the table's order.
 std::vector<std::string> record_files(const Result& result);
+// Where each per-trajectory output can be in a run's directory (the output
+// table's rows; a run writes the datasets its plan asked for): for readers of
+// saved runs (arnoldweb.load).
+struct OutputLocation {
+  std::string output, file, group;    // e.g. "final_states", "states.h5", "final"
+  std::vector<std::string> datasets;  // every dataset the row can write
+};
+std::vector<OutputLocation> output_locations();
 
 struct RenderOptions {
   int width = 900;          // pixels

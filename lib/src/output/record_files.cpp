@@ -103,6 +103,17 @@ void write_records_hdf5(const std::string& path, const std::string& file, const 
   detail::write_file_atomically(path, h.finish());
 }
 
+std::vector<OutputLocation> output_locations() {
+  std::vector<OutputLocation> out;
+  for (const RecordOutput& row : detail::record_outputs()) {
+    if (row.internal()) continue;
+    OutputLocation o{row.name, row.file, row.group, {}};
+    for (const auto& d : row.datasets) o.datasets.push_back(d.name);
+    out.push_back(std::move(o));
+  }
+  return out;
+}
+
 std::vector<std::string> record_files(const Result& r) {
   std::vector<std::string> files;
   for (const RecordOutput& row : detail::record_outputs())
