@@ -23,7 +23,10 @@ def load(results):
     for path in glob.glob(os.path.join(results, "dscan_*", "summary.json")):
         s = json.load(open(path))
         d = s["analyses"]["diffusion"]
-        eps = float(os.path.basename(os.path.dirname(path))[len("dscan_"):])
+        name = os.path.basename(os.path.dirname(path))[len("dscan_"):]
+        if "@" in name:  # another place along the resonance (AW_DSCAN_CENTRES): not in the law's fit
+            continue
+        eps = float(name)
         rows.append({"eps": eps, "along": d["along_fit"], "across": d["across_fit"],
                      "seconds": s["wall_seconds"], "trajectories": s["trajectories"],
                      "duration": s.get("scene", {}).get("run", {}).get("duration")})

@@ -70,14 +70,25 @@ T=$AW_DSCAN_T
 every=$(python3 -c "print($T / 100)")
 fit=$(python3 -c "print($T / 10)")
 res=${AW_DSCAN_RES:-362}   # the grid: res x res trajectories
+# AW_DSCAN_CENTRES: other places along the resonance I1 = I2 (the square of side 1e-6 about
+# (c, c); runs named dscan_<eps>@<c>); default: the scene's (0.3, 0.3) only
 for eps in ${AW_DSCAN_EPS:-0.006 0.008 0.010 0.012 0.015 0.020}; do
-  o="$tmp/ds_$eps"
-  run "dscan_$eps" "$o" scenes/fgl_diffusion.toml --set model.epsilon="$eps" --set run.duration="$T" \
-    --set run.average="$T" --set observe.diffusion.every="$every" --set observe.diffusion.fit_from="$fit" \
-    --set observe.diffusion.average="$every" --set "ensemble.grid.resolution=[$res, $res]" \
-    --set observe.energy_error.every="$every" --set observe.final_states=false &&
-    for f in diffusion.csv diffusion.png; do [ -f "$o/$f" ] && cp "$o/$f" "$OUTDIR/dscan_$eps/"; done
-  rm -rf "$o"
+  for c in ${AW_DSCAN_CENTRES:-scene}; do
+    name="dscan_$eps"
+    where=()
+    if [ "$c" != scene ]; then
+      name="dscan_$eps@$c"
+      r=$(python3 -c "print(f'[{$c - 5e-7!r}, {$c + 5e-7!r}]')")
+      where=(--set "ensemble.grid.range1=$r" --set "ensemble.grid.range2=$r")
+    fi
+    o="$tmp/ds_$eps"
+    run "$name" "$o" scenes/fgl_diffusion.toml --set model.epsilon="$eps" --set run.duration="$T" \
+      --set run.average="$T" --set observe.diffusion.every="$every" --set observe.diffusion.fit_from="$fit" \
+      --set observe.diffusion.average="$every" --set "ensemble.grid.resolution=[$res, $res]" "${where[@]}" \
+      --set observe.energy_error.every="$every" --set observe.final_states=false &&
+      for f in diffusion.csv diffusion.png; do [ -f "$o/$f" ] && cp "$o/$f" "$OUTDIR/$name/"; done
+    rm -rf "$o"
+  done
 done
 fi
 
