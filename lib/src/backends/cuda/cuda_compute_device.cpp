@@ -58,6 +58,8 @@ class CudaDevice final : public ComputeDevice {
 
   std::uint64_t free_memory() const override {
     std::size_t free_b = 0, total_b = 0;
+    // this device's memory, whichever device the calling thread had selected
+    if (cudaSetDevice(ordinal_) != cudaSuccess) cudaGetLastError();
     if (cudaMemGetInfo(&free_b, &total_b) != cudaSuccess) {
       cudaGetLastError();
       return 0;
