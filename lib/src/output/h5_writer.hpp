@@ -39,7 +39,8 @@ class H5Writer {
 
   hid_t group(const char* name) { return keep(check(H5Gcreate2(file_, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), name)); }
 
-  // A dataset of `dims`, chunked, shuffled and deflated when large.
+  // A dataset of `dims`, chunked when large; integer datasets (statuses,
+  // windings) also shuffled and deflated.
   hid_t dataset(hid_t where, const char* name, hid_t type, const std::vector<hsize_t>& dims, const void* data) {
     hid_t space = keep(check(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), name));
     hid_t props = keep(check(H5Pcreate(H5P_DATASET_CREATE), name));
@@ -49,10 +50,14 @@ class H5Writer {
       std::vector<hsize_t> chunk = dims;
       chunk[0] = std::min<hsize_t>(dims[0], std::max<hsize_t>(1, 65536 / std::max<hsize_t>(1, total / dims[0])));
       check(H5Pset_chunk(props, static_cast<int>(chunk.size()), chunk.data()), name);
-      // byte shuffle, then deflate at level 1: for doubles (states, actions) about the ratio of
-      // level 4 without shuffle at a fraction of its time (diffusion.h5 of 131,044 x 101 actions)
-      check(H5Pset_shuffle(props), name);
-      check(H5Pset_deflate(props, 1), name);
+      // Byte shuffle and deflate (level 1) for integers only: floating-point outputs hardly
+      // compress (frequencies.h5 of 1.5e6 trajectories 84 -> 75 MB, diffusion.h5 of 1024 x
+      // 10,001 actions 245 -> 199 MB) and zlib took 1.2-1.5 s of such a run's 3.3 s process on
+      // the H200 machine, longer than the GPU's integration (docs/outputs.md).
+      if (H5Tget_class(type) == H5T_INTEGER) {
+        check(H5Pset_shuffle(props), name);
+        check(H5Pset_deflate(props, 1), name);
+      }
     }
     hid_t set = keep(check(H5Dcreate2(where, name, type, space, H5P_DEFAULT, props, H5P_DEFAULT), name));
     if (total) check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), name);
