@@ -86,6 +86,15 @@ std::vector<hsize_t> dims_of(hid_t file, const char* name, const std::string& pa
   return dims;
 }
 
+// The stored type of a dataset or attribute must be an integer of at most 8
+// bytes: a damaged type of gigabytes per element would have the conversion
+// allocate that much before the read fails.
+void require_integer_type(hid_t type, const std::string& path, const std::string& what) {
+  const H5Handle t{type, H5Tclose};
+  if (t.id < 0 || H5Tget_class(t.id) != H5T_INTEGER || H5Tget_size(t.id) == 0 || H5Tget_size(t.id) > 8)
+    throw SavedRunError(path, what + " is not stored as integers of at most 64 bits");
+}
+
 std::string shape(const std::vector<hsize_t>& dims) {
   std::string s;
   for (hsize_t d : dims) s += (s.empty() ? "" : " x ") + std::to_string(d);
@@ -105,6 +114,7 @@ std::vector<std::uint64_t> read_counts(hid_t file, const char* name, const std::
   std::vector<std::uint64_t> v(dims.empty() ? 0 : n);
   if (v.empty()) return v;
   const H5Handle d{H5Dopen2(file, name, H5P_DEFAULT), H5Dclose};
+  if (d.id >= 0) require_integer_type(H5Dget_type(d.id), path, std::string("the dataset ") + name);
   if (d.id < 0 || H5Dread(d.id, H5T_NATIVE_UINT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
     throw SavedRunError(path, std::string("cannot read the dataset ") + name + " as unsigned 64-bit counts");
   return v;
@@ -116,6 +126,7 @@ std::int64_t nside_attribute(hid_t file, const std::string& path) {
   if (d.id < 0 || H5Aexists(d.id, "nside") <= 0) throw SavedRunError(path, "the dataset map has no nside");
   const H5Handle a{H5Aopen(d.id, "nside", H5P_DEFAULT), H5Aclose};
   const H5Handle space{a.id < 0 ? -1 : H5Aget_space(a.id), H5Sclose};
+  if (a.id >= 0) require_integer_type(H5Aget_type(a.id), path, "the attribute nside of the dataset map");
   if (a.id < 0 || space.id < 0 || H5Sget_simple_extent_npoints(space.id) != 1 ||
       H5Aread(a.id, H5T_NATIVE_INT64, &nside) < 0)
     throw SavedRunError(path, "cannot read the attribute nside of the dataset map");

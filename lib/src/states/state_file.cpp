@@ -60,6 +60,9 @@ class StateFile {
     if (H5Tget_class(type.id) != type_class)
       fail(n, -1, type_class == H5T_FLOAT ? "must hold floating-point numbers (float64 or float32)"
                                           : "must hold integers (int64 or another integer type)");
+    // a damaged type of gigabytes per value would have the conversion allocate that much
+    if (H5Tget_size(type.id) == 0 || H5Tget_size(type.id) > 8)
+      fail(n, -1, "stores values of " + std::to_string(H5Tget_size(type.id)) + " bytes; at most 8 (a damaged file?)");
     const H5Handle space{H5Dget_space(d.id), H5Sclose};
     const int rank = H5Sget_simple_extent_ndims(space.id);
     hsize_t dims[2] = {0, 0};
@@ -102,6 +105,7 @@ class StateFile {
       return s;
     }
     const std::size_t size = H5Tget_size(type.id);
+    if (size > (1u << 20)) fail(object, -1, std::string("the attribute ") + attr + " is longer than 1 MiB (a damaged file?)");
     std::string s(size, '\0');
     if (H5Aread(a.id, type.id, s.data()) < 0) fail(object, -1, std::string("cannot read the attribute ") + attr);
     s.resize(std::strlen(s.c_str()));
@@ -113,6 +117,7 @@ class StateFile {
     const H5Handle space{a.id < 0 ? -1 : H5Aget_space(a.id), H5Sclose};
     double v = 0;
     if (a.id < 0 || (H5Tget_class(type.id) != H5T_FLOAT && H5Tget_class(type.id) != H5T_INTEGER) ||
+        H5Tget_size(type.id) == 0 || H5Tget_size(type.id) > 8 ||
         H5Sget_simple_extent_npoints(space.id) != 1 || H5Aread(a.id, H5T_NATIVE_DOUBLE, &v) < 0)
       fail(group(), -1, std::string("the attribute ") + attr + " must be one number");
     return v;
