@@ -13,6 +13,14 @@
 
 namespace arnoldweb::detail {
 
+std::string this_library_dir() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&this_library_dir), &info) == 0 || !info.dli_fname) return {};
+  const std::string path = info.dli_fname;
+  const auto slash = path.rfind('/');
+  return slash == std::string::npos ? std::string() : path.substr(0, slash);
+}
+
 void* load_shared_object_symbol(const std::string& image, const std::string& symbol) {
   const int fd = ::memfd_create("arnoldweb-kernel", MFD_CLOEXEC);
   if (fd < 0) throw std::runtime_error(std::string("memfd_create: ") + std::strerror(errno));

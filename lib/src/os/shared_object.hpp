@@ -12,4 +12,8 @@ namespace arnoldweb::detail {
 // symbol `symbol`. Throws std::runtime_error with the loader's message.
 void* load_shared_object_symbol(const std::string& image, const std::string& symbol);
 
+// The folder libarnoldweb was loaded from ("" if unknown): where its plugins
+// and a wheel's neighbouring packages are looked for.
+std::string this_library_dir();
+
 }  // namespace arnoldweb::detail

@@ -8,24 +8,16 @@
 #include <mutex>
 
 #include "arnoldweb/version.hpp"
+#include "os/shared_object.hpp"
 
 namespace arnoldweb::detail {
 namespace {
 
 constexpr const char* kPluginName = "libarnoldweb_pictures.so";
 
-// The folder this library was loaded from ("" if unknown).
-std::string own_dir() {
-  Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&picture_functions), &info) == 0 || !info.dli_fname) return {};
-  std::string path = info.dli_fname;
-  const auto slash = path.rfind('/');
-  return slash == std::string::npos ? std::string() : path.substr(0, slash);
-}
-
 std::string plugin_path() {
   if (const char* forced = std::getenv("ARNOLDWEB_PICTURES"); forced && *forced) return forced;
-  const std::string dir = own_dir();
+  const std::string dir = this_library_dir();
   return dir.empty() ? kPluginName : dir + "/" + kPluginName;
 }
 
@@ -62,14 +54,15 @@ const PictureFunctions* picture_functions(std::string* why) {
   static const PictureFunctions* functions = nullptr;
   static std::string problem;
   std::call_once(once, [] {
-#ifdef ARNOLDWEB_HAVE_CAIRO
-    functions = open_picture_plugin(plugin_path(), &problem);
-#else
-    if (const char* forced = std::getenv("ARNOLDWEB_PICTURES"); forced && *forced)
-      functions = open_picture_plugin(forced, &problem);
-    else
+#ifndef ARNOLDWEB_HAVE_CAIRO
+    // no plugin was built beside this library; one named by $ARNOLDWEB_PICTURES is still tried
+    const char* forced = std::getenv("ARNOLDWEB_PICTURES");
+    if (!forced || !*forced) {
       problem = "this build has no pictures (cairo was not found when it was configured)";
+      return;
+    }
 #endif
+    functions = open_picture_plugin(plugin_path(), &problem);
   });
   if (!functions && why) *why = problem;
   return functions;

@@ -7,20 +7,12 @@
 #include <vector>
 
 #include "arnoldweb/errors.hpp"
+#include "os/shared_object.hpp"
 
 namespace arnoldweb::detail {
 namespace {
 
 constexpr const char* kSonames[] = {"libnvrtc.so.13", "libnvrtc.so.12"};
-
-// The folder this library was loaded from ("" if unknown).
-std::string own_dir() {
-  Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&nvrtc_api), &info) == 0 || !info.dli_fname) return {};
-  std::string path = info.dli_fname;
-  const auto slash = path.rfind('/');
-  return slash == std::string::npos ? std::string() : path.substr(0, slash);
-}
 
 }  // namespace
 
@@ -28,7 +20,7 @@ std::vector<std::string> nvrtc_candidates() {
   if (const char* forced = std::getenv("ARNOLDWEB_NVRTC"); forced && *forced) return {forced};
   std::vector<std::string> c(std::begin(kSonames), std::end(kSonames));
   std::vector<std::string> dirs;
-  if (const std::string own = own_dir(); !own.empty()) {
+  if (const std::string own = this_library_dir(); !own.empty()) {
     dirs.push_back(own + "/../nvidia/cu13/lib");
     dirs.push_back(own + "/../nvidia/cuda_nvrtc/lib");
   }
