@@ -22,6 +22,19 @@ __kernel void aw_ensemble(ulong chunk_first, ulong chunk_end, long seg_first, lo
                   esum, group_stats);
 }
 
+/* The frequency analysis of a launch's trajectories, after aw_ensemble over
+ * all their segments (effects/aw_fx_frequencies.h). Compiled only where the
+ * plan asks for frequencies. */
+#if AW_FEATURES & AW_F_FREQUENCIES
+__kernel void aw_frequencies(ulong chunk_first, ulong chunk_end AW_BUFFERS(AW_KERNEL_PARAM)) {
+  aw_lanes l = {chunk_first + (ulong)get_global_id(0) * AW_LANES, chunk_end, chunk_first};
+  if (l.first < chunk_end) {
+    aw_outputs out = {hist, counters, rec_r, rec_i, series};
+    aw_freq_analyse(l, rp, ip, out);
+  }
+}
+#endif
+
 /* total[i] += part[i]; part[i] = 0: 32-bit chunk counts into 64-bit totals. */
 __kernel void aw_fold(__global ulong* total, __global uint* part, ulong n) {
   size_t i = get_global_id(0);

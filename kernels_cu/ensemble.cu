@@ -4,6 +4,11 @@
  * -DAW_MODEL=<id> [-DAW_FLOAT] [-DAW_NATIVE_MATH]. */
 #define AW_LOCAL
 #define AW_BARRIER() __syncthreads()
+/* samples loaded ahead in a frequency pass (aw_naff.h): 4 fit the registers of
+ * AW_CUDA_FREQ_MIN_BLOCKS = 6 without spilling */
+#ifndef AW_NAFF_BATCH
+#define AW_NAFF_BATCH 4
+#endif
 #include "aw_ensemble.h"
 #include "aw_reduce.h"
 
@@ -38,6 +43,24 @@ extern "C" __global__ void __launch_bounds__(AW_CUDA_MAX_BLOCK, AW_CUDA_MIN_BLOC
   }
   aw_group_reduce(scratch, (int)threadIdx.x, (int)blockDim.x, blockIdx.x, emax, esum, group_stats);
 }
+
+/* The frequency analysis of a launch's trajectories, after aw_ensemble over
+ * all their segments (effects/aw_fx_frequencies.h). Compiled only where the
+ * plan asks for frequencies. Its passes over the samples wait on memory:
+ * AW_CUDA_FREQ_MIN_BLOCKS blocks per SM keep more of them in flight. */
+#if AW_FEATURES & AW_F_FREQUENCIES
+#ifndef AW_CUDA_FREQ_MIN_BLOCKS
+#define AW_CUDA_FREQ_MIN_BLOCKS 6
+#endif
+extern "C" __global__ void __launch_bounds__(AW_CUDA_MAX_BLOCK, AW_CUDA_FREQ_MIN_BLOCKS)
+    aw_frequencies(aw_u64 chunk_first, aw_u64 chunk_end AW_BUFFERS(AW_KERNEL_PARAM)) {
+  aw_lanes l = {chunk_first + ((aw_u64)blockIdx.x * blockDim.x + threadIdx.x), chunk_end, chunk_first};
+  if (l.first < chunk_end) {
+    aw_outputs out = {hist, counters, rec_r, rec_i, series};
+    aw_freq_analyse(l, rp, ip, out);
+  }
+}
+#endif
 
 /* total[i] += part[i]; part[i] = 0: 32-bit chunk counts into 64-bit totals. */
 extern "C" __global__ void aw_fold(aw_u64* total, aw_u32* part, aw_u64 n) {

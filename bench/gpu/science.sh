@@ -33,7 +33,8 @@ run() {  # NAME OUT SCENE ARGS...: runs, prints the times, keeps summary.json un
 import json, sys
 s = json.load(open(sys.argv[1]))
 print(f"{sys.argv[2]:28s} process {float(sys.argv[4]) - float(sys.argv[3]):8.2f} s  run {s['wall_seconds']:8.2f} s"
-      f"  {s['trajectory_steps_per_second']:.3e} traj-steps/s  trajectories {s['trajectories']}")
+      f"  {s['trajectory_steps_per_second']:.3e} traj-steps/s  trajectories {s['trajectories']}"
+      + (f"  frequencies {s['digests']['frequencies']}" if s.get('digests', {}).get('frequencies') else ""))
 PY
 }
 
@@ -56,6 +57,21 @@ for rep in 1 2; do
   run "default_map_freq_$rep" "$tmp/d2" "$scene" --set output.images=false "${freq[@]}"
   run "default_map_freq_chunk_$rep" "$tmp/d3" "$scene" --set output.images=false "${freq[@]}" "${chunk[@]}"
 done
+# AW_FREQ_VARIANTS="name=NVRTC options;...": the frequency run again under each kernel variant
+# (ARNOLDWEB_NVRTC_OPTIONS), after a warm-up that fills its kernel cache; its frequencies.h5 digest
+# on its line (variants that only reorder loads must give the same bits)
+if [ -n "${AW_FREQ_VARIANTS:-}" ]; then
+  IFS=';' read -r -a variants <<<"$AW_FREQ_VARIANTS"
+  for v in "${variants[@]}"; do
+    ARNOLDWEB_NVRTC_OPTIONS="${v#*=}" run "warm_${v%%=*}" "$tmp/w3" "$scene" --set ensemble.trajectories=65536 \
+      --set output.images=false "${freq[@]}" >/dev/null
+  done
+  for rep in 1 2; do
+    for v in "${variants[@]}"; do
+      ARNOLDWEB_NVRTC_OPTIONS="${v#*=}" run "freq_${v%%=*}_$rep" "$tmp/v" "$scene" --set output.images=false "${freq[@]}"
+    done
+  done
+fi
 run fgl_fli_only "$tmp/f1" scenes/fgl_frequency_map.toml --set observe.frequencies=false --set output.images=false
 run fgl_fli_freq "$tmp/f2" scenes/fgl_frequency_map.toml
 mkdir -p "$OUTDIR/gallery"

@@ -50,6 +50,7 @@
 #define AW_NAFF_ANCHOR 32   /* rotations recomputed exactly every this many samples */
 #define AW_NAFF_MAX_ITER 40 /* Newton/bisection passes of aw_naff_refine at most */
 #define AW_NAFF_TWO_PI AW_R(6.283185307179586)
+#define AW_NAFF_QUADRATIC AW_R(0.125) /* the margin of the last Newton step (aw_naff_search_step) */
 
 /* One pass's sums at a frequency: S_0, S_1, S_2 (real and imaginary parts)
  * and the sum of the window's weights. */
@@ -287,7 +288,11 @@ AW_FN int aw_naff_search_step(aw_naff_search* q, const aw_naff_sums* s, int n) {
   real step = (c < AW_R(0.0)) ? -g / (AW_NAFF_TWO_PI * c) : AW_R(0.0);
   int newton = c < AW_R(0.0) && AW_FABS(step) <= half_bin;
   if (!newton) step = (g > AW_R(0.0)) ? half_bin : -half_bin; /* uphill */
-  if (newton && AW_FABS(step) <= eps * (AW_FABS(q->x) + half_bin)) {
+  /* Newton converges quadratically: after a step of size s the error is about
+   * s^2 / (the width of the peak, ~ a bin), so a step below
+   * AW_NAFF_QUADRATIC sqrt(eps (|x| + half a bin) half a bin) leaves an error
+   * below eps (|x| + half a bin), round-off, without another pass to see it. */
+  if (newton && AW_FABS(step) <= AW_NAFF_QUADRATIC * AW_SQRT(eps * (AW_FABS(q->x) + half_bin) * half_bin)) {
     q->x = q->x + step;
     q->done = 1;
     return 0;
@@ -319,9 +324,10 @@ AW_FN int aw_naff_search_step(aw_naff_search* q, const aw_naff_sums* s, int n) {
  * maximum) the Newton step -g / (2 pi c) if it is below half a bin, else half
  * a bin uphill; once the maximum is bracketed (slopes of both signs seen), a
  * Newton step that leaves the bracket is replaced by its midpoint. It stops
- * when a step (or the bracket) is below eps (|x| + 1/(2n)), or when two
- * Newton steps in a row stop shrinking (the round-off floor of g: the last x
- * is kept).
+ * after a Newton step below AW_NAFF_QUADRATIC sqrt(eps (|x| + 1/(2n)) / (2n))
+ * (Newton's error after it, quadratic, is below round-off), when a step (or
+ * the bracket) is below eps (|x| + 1/(2n)), or when two Newton steps in a row
+ * stop shrinking (the round-off floor of g: the last x is kept).
  * ok = 0 (and freq = sigma0) where no maximum was found within
  * AW_NAFF_MAX_ITER passes, or the samples are not finite. n >= 3, p >= 0. */
 AW_FN void aw_naff_refine(AW_GLOBAL const real* re, AW_GLOBAL const real* im, aw_u64 stride, int n, int p,
@@ -383,7 +389,14 @@ typedef struct {
   lreal s0r, s0i, s1r, s1i, s2r, s2i;
 } aw_naff_lsums;
 
-/* One pass for every lane at its own sigma; the samples prewindowed. */
+/* One pass for every lane at its own sigma; the samples prewindowed. The
+ * samples are loaded AW_NAFF_BATCH at a time before they are used: a pass is
+ * a chain of dependent rotations, and a GPU thread that waits for each load
+ * in turn keeps one load in flight (a pass then runs at the memory's latency,
+ * not its bandwidth). The arithmetic is the same in the same order. */
+#ifndef AW_NAFF_BATCH
+#define AW_NAFF_BATCH 8
+#endif
 AW_FN void aw_naff_lsums_at(AW_GLOBAL const real* re, AW_GLOBAL const real* im, aw_u64 stride, int n, lreal sigma,
                             aw_naff_lsums* out) {
   const real centre = AW_R(0.5) * (real)(n - 1);
@@ -391,26 +404,34 @@ AW_FN void aw_naff_lsums_at(AW_GLOBAL const real* re, AW_GLOBAL const real* im, 
   lreal dc, ds, ec = AW_LSPLAT(AW_R(1.0)), es = AW_LSPLAT(AW_R(0.0));
   aw_sincos2pi(a, &ds, &dc);
   lreal s0r = AW_LSPLAT(AW_R(0.0)), s0i = s0r, s1r = s0r, s1i = s0r, s2r = s0r, s2i = s0r;
-  for (int k = 0; k < n; ++k) {
-    const real m = (real)k - centre;
-    if (k % AW_NAFF_ANCHOR == 0) {
-      aw_sincos2pi(a * m, &es, &ec);
-    } else {
-      const lreal c = AW_FMA(ec, dc, -(es * ds));
-      const lreal sn = AW_FMA(es, dc, ec * ds);
-      ec = c;
-      es = sn;
+  for (int k0 = 0; k0 < n; k0 += AW_NAFF_BATCH) {
+    lreal zr[AW_NAFF_BATCH], zi[AW_NAFF_BATCH];
+    for (int b = 0; b < AW_NAFF_BATCH; ++b) {
+      const int k = (k0 + b < n) ? k0 + b : n - 1; /* past the end: a sample loaded again, not used */
+      zr[b] = AW_LOAD_LANES(re + (aw_u64)k * stride);
+      zi[b] = AW_LOAD_LANES(im + (aw_u64)k * stride);
     }
-    const lreal zr = AW_LOAD_LANES(re + (aw_u64)k * stride), zi = AW_LOAD_LANES(im + (aw_u64)k * stride);
-    const lreal ar = AW_FMA(zr, ec, -(zi * es));
-    const lreal ai = AW_FMA(zr, es, zi * ec);
-    s0r = s0r + ar;
-    s0i = s0i + ai;
-    s1r = AW_FMA(AW_LSPLAT(m), ar, s1r);
-    s1i = AW_FMA(AW_LSPLAT(m), ai, s1i);
-    const real mm = m * m;
-    s2r = AW_FMA(AW_LSPLAT(mm), ar, s2r);
-    s2i = AW_FMA(AW_LSPLAT(mm), ai, s2i);
+    for (int b = 0; b < AW_NAFF_BATCH && k0 + b < n; ++b) {
+      const int k = k0 + b;
+      const real m = (real)k - centre;
+      if (k % AW_NAFF_ANCHOR == 0) {
+        aw_sincos2pi(a * m, &es, &ec);
+      } else {
+        const lreal c = AW_FMA(ec, dc, -(es * ds));
+        const lreal sn = AW_FMA(es, dc, ec * ds);
+        ec = c;
+        es = sn;
+      }
+      const lreal ar = AW_FMA(zr[b], ec, -(zi[b] * es));
+      const lreal ai = AW_FMA(zr[b], es, zi[b] * ec);
+      s0r = s0r + ar;
+      s0i = s0i + ai;
+      s1r = AW_FMA(AW_LSPLAT(m), ar, s1r);
+      s1i = AW_FMA(AW_LSPLAT(m), ai, s1i);
+      const real mm = m * m;
+      s2r = AW_FMA(AW_LSPLAT(mm), ar, s2r);
+      s2i = AW_FMA(AW_LSPLAT(mm), ai, s2i);
+    }
   }
   out->s0r = s0r;
   out->s0i = s0i;

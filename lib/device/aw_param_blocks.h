@@ -102,9 +102,8 @@ typedef struct {
   aw_i64 diffusion_average_points; /* actions averaged into a sample (0: the actions at the sample time) */
   aw_i64 diffusion_average_stride; /* segments between two of them */
   /* per-trajectory work memory in the series buffer (AW_BUFFERS): series_reals
-   * reals per trajectory, element e of trajectory rec at series[e * series_stride + rec]
-   * (series_stride: the trajectories a launch holds; the backend sets it) */
-  aw_i64 series_reals, series_stride;
+   * reals per trajectory, in blocks of AW_SERIES_BLOCK trajectories */
+  aw_i64 series_reals;
   /* the records (aw_params.h): columns per trajectory, and where each slot's columns start */
   aw_i64 rec_reals, rec_ints;
   aw_i64 rec_col_r[AW_OUT_SLOTS], rec_col_i[AW_OUT_SLOTS];

@@ -90,6 +90,13 @@
 #define AW_OUT_FREQUENCIES 4   /* AW_FREQ_REALS reals (effects/aw_fx_frequencies.h) */
 #define AW_OUT_ACTIONS 5       /* 3 (K + 1) reals, 1 integer (effects/aw_fx_diffusion.h) */
 #define AW_FREQ_REALS 7
+/* The frequencies' work memory per trajectory (series buffer) for windows of
+ * n samples: both windows' samples, the mean rates, a flag
+ * (effects/aw_fx_frequencies.h). */
+#define AW_FREQ_SERIES_REALS(n) (12 * (n) + 7)
+/* The series buffer holds blocks of this many trajectories (a warp; every
+ * lane width divides it). */
+#define AW_SERIES_BLOCK 32
 #define AW_OUT_SLOTS 8
 
 /* A state: 6 reals (u_x, u_y, u_z in turns, wrapped; p_x, p_y, p_z) and 4
@@ -138,8 +145,8 @@
  *                ip->rec_ints integers (the records)
  *   group_stats  per work-group, AW_GROUP_STATS reals
  *   series       per trajectory of the chunk, ip->series_reals reals of work
- *                memory (the frequency samples), coalesced: element e of
- *                trajectory rec at series[e * ip->series_stride + rec]
+ *                memory (the frequency samples), in blocks of
+ *                AW_SERIES_BLOCK trajectories (effects/aw_fx_frequencies.h)
  * X(NAME, address space, element type, parameter name) */
 #define AW_BUFFERS(X)                      \
   X(RPARAMS, AW_CONSTANT, aw_rparams, rp)  \

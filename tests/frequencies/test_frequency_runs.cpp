@@ -13,6 +13,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -206,6 +207,47 @@ TEST_SUITE("frequency-runs") {
           CHECK(digest_records(r, name) == digest_records(ref, name));
         }
         CHECK(r.analyses == ref.analyses);
+      }
+    }
+  }
+
+  // The paper's model at E = 15: chaotic orbits, whose refinements take from 2 to
+  // more than 20 passes (2-23, mean 5, on the default scene's ensemble). A GPU work-item refines its trajectory's six signals in one loop
+  // of passes (aw_freq_analyse with AW_LANES = 1), a CPU vector the lanes' same
+  // signal together: the same frequencies, bit for bit. OpenCL devices run both
+  // widths (ARNOLDWEB_OPENCL_LANES = 1 is a GPU's).
+  TEST_CASE("frequencies of chaotic orbits: every device and lane width gives the cpu backend's bits") {
+    const Plan plan = make_plan(awtest::scene_from(R"(
+      [model]
+      energy = 15.0
+      [ensemble]
+      trajectories = 300
+      seed = 7
+      [integrator]
+      method = "yoshida6a"
+      step = 0.02
+      [run]
+      average = 10.24
+      duration = 10.24
+      [observe]
+      velocity_map = { nside = 4 }
+      frequencies = { samples = 128, every = 0.04 }
+    )", {}, "<frequency-runs>"));
+    const Result ref = awtest::run_on("cpu", plan);
+    const std::vector<double> f = ref.reals("frequencies");
+    REQUIRE(f.size() == 300 * AW_FREQ_REALS);
+    int finite = 0;
+    for (double v : f) finite += std::isfinite(v) ? 1 : 0;
+    CHECK(finite > 250 * AW_FREQ_REALS);  // most orbits give every frequency
+    for (const auto& device : awtest::devices_under_test()) {
+      for (const char* lanes : {"", "1"}) {
+        if (*lanes && device.backend != "opencl") continue;
+        CAPTURE(device.id);
+        CAPTURE(lanes);
+        if (*lanes) ::setenv("ARNOLDWEB_OPENCL_LANES", lanes, 1);
+        const Result r = awtest::run_on(device.id, plan);
+        ::unsetenv("ARNOLDWEB_OPENCL_LANES");
+        CHECK(awtest::first_difference(r.reals("frequencies"), f) == -1);
       }
     }
   }

@@ -28,6 +28,20 @@ typedef struct {
   AW_GLOBAL real* series;      /* the sampled time series, ip->series_reals per trajectory (aw_params.h) */
 } aw_outputs;
 
+/* A quiet NaN with the same bits everywhere (0/0 gives the sign bit set on
+ * x86 and not where the compiler folds it): from its bit pattern. */
+#ifdef AW_FLOAT
+#define AW_QNAN_BITS AW_BITS_C(0x7FC00000)
+#else
+#define AW_QNAN_BITS AW_BITS_C(0x7FF8000000000000)
+#endif
+AW_FN real aw_nan_real(void) {
+  lreal n = AW_FROM_BITS(AW_AS_BITS(AW_LSPLAT(AW_R(0.0))) | AW_QNAN_BITS);
+  real a[AW_LANES];
+  AW_STORE_LANES(n, a);
+  return a[0];
+}
+
 /* The columns of output `slot` in the records of trajectory `rec` (relative
  * to the chunk's first): reals and integers. Only slots the plan lays out
  * (the kernel's features ask for them) may be written. */

@@ -13,20 +13,6 @@
 
 #include "aw_tangent.h"
 
-/* A quiet NaN with the same bits everywhere (0/0 gives the sign bit set on
- * x86 and not where the compiler folds it): from its bit pattern. */
-#ifdef AW_FLOAT
-#define AW_QNAN_BITS AW_BITS_C(0x7FC00000)
-#else
-#define AW_QNAN_BITS AW_BITS_C(0x7FF8000000000000)
-#endif
-AW_FN real aw_nan_real(void) {
-  lreal n = AW_FROM_BITS(AW_AS_BITS(AW_LSPLAT(AW_R(0.0))) | AW_QNAN_BITS);
-  real a[AW_LANES];
-  AW_STORE_LANES(n, a);
-  return a[0];
-}
-
 /* log x for x > 0 finite, NaN otherwise. */
 AW_FN real aw_log_or_nan(real x) { return (x > AW_R(0.0) && x - x == AW_R(0.0)) ? aw_log(x) : aw_nan_real(); }
 

@@ -73,6 +73,11 @@ class ComputeDevice {
   virtual LaunchShape shape(std::uint64_t count) const = 0;
   // The ensemble kernel over a range; may return before it is done.
   virtual void launch_ensemble(const LaunchRange& range, const LaunchShape& shape, const EnsembleBuffers& buffers) = 0;
+  // The frequency analysis of trajectories [first, first + count) after their
+  // ensemble launch over every segment (its samples are in the series buffer);
+  // compiled, and called, only where the configuration has AW_F_FREQUENCIES.
+  virtual void launch_frequencies(const LaunchRange& range, const LaunchShape& shape,
+                                  const EnsembleBuffers& buffers) = 0;
   // total[i] += part[i], part[i] = 0 for i < n (64-bit totals of 32-bit counts).
   virtual void launch_fold(DeviceMemory& total, DeviceMemory& part, std::uint64_t n) = 0;
   // Waits for what was launched; errors raised inside kernels surface here,

@@ -29,6 +29,7 @@ class EnsembleBackend final : public Backend {
     release();
     dev_->compile(plan.kernel);
     float_ = plan.kernel.precision == Precision::Float;
+    frequencies_ = (plan.kernel.features & AW_F_FREQUENCIES) != 0;
     hist_size_ = plan.hist_size;
     segments_ = plan.windows * plan.segments_per_window;
     rec_reals_ = static_cast<std::uint64_t>(params(plan).ints.rec_reals);
@@ -53,6 +54,8 @@ class EnsembleBackend final : public Backend {
     }
     const LaunchRange range{first, count, w.seg_first, w.seg_end < 0 ? segments_ : w.seg_end};
     if (count > 0) dev_->launch_ensemble(range, shape, b_);
+    // no time slices with frequencies (the planner refuses them): every launch ends both windows
+    if (count > 0 && frequencies_) dev_->launch_frequencies(range, shape, b_);
     if (hist_size_) dev_->launch_fold(*map64_, *b_[AW_BUF_HIST], hist_size_);
     dev_->finish("trajectories [" + std::to_string(first) + ", " + std::to_string(first + count) + ")");
 
@@ -99,9 +102,9 @@ class EnsembleBackend final : public Backend {
     const std::size_t hist = std::max<std::uint64_t>(hist_size_, 1);
     const std::size_t rec_r = max_chunk_ * rec_reals_ * rs;
     const std::size_t rec_i = max_chunk_ * rec_ints_ * 8;
-    // the series hold whole groups of lanes (the kernels store and load every lane of a group)
-    const std::size_t series_stride = (max_chunk_ + 63) / 64 * 64;
-    const std::size_t series = series_stride * static_cast<std::size_t>(kp.ints.series_reals) * rs;
+    // the series hold whole blocks of trajectories (the kernels store and load every lane of a group)
+    const std::size_t series_blocks = (max_chunk_ + AW_SERIES_BLOCK - 1) / AW_SERIES_BLOCK;
+    const std::size_t series = series_blocks * AW_SERIES_BLOCK * static_cast<std::size_t>(kp.ints.series_reals) * rs;
     const double need = static_cast<double>(reals.size() + sizeof(IntParams) + hist * 12 + AW_C_COUNT * 4 +
                                             AW_GROUP_STATS * groups * rs + rec_r + rec_i + series);
     const std::uint64_t free = dev_->free_memory();
@@ -113,10 +116,8 @@ class EnsembleBackend final : public Backend {
                             "observe.velocity_map.nside smaller (map)");
     b_[AW_BUF_RPARAMS] = make(reals.size(), "the real parameters");
     dev_->upload(*b_[AW_BUF_RPARAMS], reals.data(), reals.size());
-    IntParams ints = kp.ints;
-    ints.series_stride = static_cast<std::int64_t>(series_stride);
     b_[AW_BUF_IPARAMS] = make(sizeof(IntParams), "the integer parameters");
-    dev_->upload(*b_[AW_BUF_IPARAMS], &ints, sizeof(IntParams));
+    dev_->upload(*b_[AW_BUF_IPARAMS], &kp.ints, sizeof(IntParams));
     b_[AW_BUF_HIST] = make(hist * 4, "the velocity map (32-bit chunk counts)");
     map64_ = make(hist * 8, "the velocity map (64-bit totals)");
     dev_->zero(*b_[AW_BUF_HIST]);
@@ -158,7 +159,7 @@ class EnsembleBackend final : public Backend {
   std::vector<std::unique_ptr<DeviceMemory>> owned_;
   EnsembleBuffers b_;
   DeviceMemory* map64_ = nullptr;
-  bool float_ = false;
+  bool float_ = false, frequencies_ = false;
   std::uint64_t hist_size_ = 0, max_chunk_ = 0, rec_reals_ = 0, rec_ints_ = 0;
   std::int64_t segments_ = 0;  // of a trajectory's schedule
 };

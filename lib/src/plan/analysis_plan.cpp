@@ -68,7 +68,7 @@ void fill_analysis_ints(const Scene& scene, const Plan& p, IntParams& ip) {
   if (scene.frequencies) {
     ip.frequency_samples = scene.frequency_samples;
     ip.frequency_order = scene.frequency_window;
-    ip.series_reals = 6 * static_cast<std::int64_t>(scene.frequency_samples);  // a window: 3 angles, re and im
+    ip.series_reals = AW_FREQ_SERIES_REALS(scene.frequency_samples);  // both windows, the rates, a flag
   }
   if (scene.diffusion) ip.diffusion_samples = exact_ratio(scene.duration, scene.diffusion_every);
   ip.diffusion_average_stride = p.diffusion_average_stride;

@@ -105,18 +105,11 @@ class CpuDevice final : public ComputeDevice {
   }
 
   void launch_ensemble(const LaunchRange& r, const LaunchShape&, const EnsembleBuffers& b) override {
-    CpuChunk c;
-    c.features = config_.features;
-    c.stages = config_.stages;
-    c.kick_first = config_.kick_first ? 1 : 0;
-    c.gradient = config_.gradient ? 1 : 0;
-    c.initial = config_.initial;
-    c.first = r.first;
-    c.end = r.first + r.count;
-    c.seg_first = r.seg_first;
-    c.seg_end = r.seg_end;
-    for (int i = 0; i < AW_BUF_COUNT; ++i) c.buffers[i] = b.at[i] ? host(*b.at[i]).data() : nullptr;
-    kernel_(c);
+    kernel_(chunk(r, b, false));
+  }
+
+  void launch_frequencies(const LaunchRange& r, const LaunchShape&, const EnsembleBuffers& b) override {
+    kernel_(chunk(r, b, true));
   }
 
   void launch_fold(DeviceMemory& total, DeviceMemory& part, std::uint64_t n) override {
@@ -132,6 +125,22 @@ class CpuDevice final : public ComputeDevice {
   std::uint64_t preferred_chunk() const override { return kCpuBlock * info_.compute_units * 4; }
 
  private:
+  CpuChunk chunk(const LaunchRange& r, const EnsembleBuffers& b, bool frequencies) const {
+    CpuChunk c;
+    c.frequencies = frequencies;
+    c.features = config_.features;
+    c.stages = config_.stages;
+    c.kick_first = config_.kick_first ? 1 : 0;
+    c.gradient = config_.gradient ? 1 : 0;
+    c.initial = config_.initial;
+    c.first = r.first;
+    c.end = r.first + r.count;
+    c.seg_first = r.seg_first;
+    c.seg_end = r.seg_end;
+    for (int i = 0; i < AW_BUF_COUNT; ++i) c.buffers[i] = b.at[i] ? host(*b.at[i]).data() : nullptr;
+    return c;
+  }
+
   DeviceInfo info_;
   KernelConfig config_;
   CpuKernel kernel_ = nullptr;

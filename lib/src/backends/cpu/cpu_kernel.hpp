@@ -22,6 +22,7 @@ struct CpuChunk {
   int initial = 0;
   std::uint64_t first = 0, end = 0;       // trajectories [first, end)
   std::int64_t seg_first = 0, seg_end = 0;  // over the segments [seg_first, seg_end) of their schedule
+  bool frequencies = false;  // the frequency analysis of the trajectories instead (aw_freq_analyse)
   // the kernel's buffers in host memory, indexed by AW_BUF_* (aw_params.h:
   // AW_BUFFERS); reals in the variant's precision; null where the plan needs none
   void* buffers[AW_BUF_COUNT] = {};

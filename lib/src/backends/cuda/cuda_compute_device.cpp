@@ -71,6 +71,7 @@ class CudaDevice final : public ComputeDevice {
     select();
     real_size_ = config.precision == Precision::Float ? sizeof(float) : sizeof(double);
     defines_ = config.defines();
+    frequencies_ = (config.features & AW_F_FREQUENCIES) != 0;
     model_source_ = config.model_source;
     target_ = nvrtc_target(cc_, label());
     load();
@@ -124,6 +125,23 @@ class CudaDevice final : public ComputeDevice {
                "aw_ensemble over trajectories [" + std::to_string(r.first) + ", " + std::to_string(r.first + r.count) + ")");
   }
 
+  void launch_frequencies(const LaunchRange& r, const LaunchShape& s, const EnsembleBuffers& b) override {
+    if (!frequencies_kernel_) throw DeviceError(info_.id, "", 0, "launch before compile");
+    select();
+    unsigned long long chunk_first = r.first, chunk_end = r.first + r.count;
+    void* buffers[AW_BUF_COUNT];
+    void* args[2 + AW_BUF_COUNT] = {&chunk_first, &chunk_end};
+    for (int i = 0; i < AW_BUF_COUNT; ++i) {
+      buffers[i] = dptr(b.at[i]);
+      args[2 + i] = &buffers[i];
+    }
+    cuda_check(cudaLaunchKernel(reinterpret_cast<const void*>(frequencies_kernel_),
+                                dim3(static_cast<unsigned>(s.groups)), dim3(block_), args, 0, stream_.get()),
+               info_.id, "cudaLaunchKernel",
+               "aw_frequencies over trajectories [" + std::to_string(r.first) + ", " +
+                   std::to_string(r.first + r.count) + ")");
+  }
+
   void launch_fold(DeviceMemory& total, DeviceMemory& part, std::uint64_t n) override {
     void* t = dptr(&total);
     void* p = dptr(&part);
@@ -155,6 +173,7 @@ class CudaDevice final : public ComputeDevice {
   void load() {
     ensemble_ = nullptr;
     fold_ = nullptr;
+    frequencies_kernel_ = nullptr;
     library_.reset();
     CachedImage img = cuda_ensemble_image(defines_, target_, label(), model_source_);
     cudaError_t e = try_load(*img.image);
@@ -178,6 +197,11 @@ class CudaDevice final : public ComputeDevice {
     cuda_check(cudaLibraryGetKernel(&k, library_.get(), "aw_fold"), info_.id, "cudaLibraryGetKernel",
                "aw_fold");
     fold_ = k;
+    if (frequencies_) {
+      cuda_check(cudaLibraryGetKernel(&k, library_.get(), "aw_frequencies"), info_.id, "cudaLibraryGetKernel",
+                 "aw_frequencies");
+      frequencies_kernel_ = k;
+    }
 
     cudaFuncAttributes attr{};
     cuda_check(cudaFuncGetAttributes(&attr, reinterpret_cast<const void*>(ensemble_)), info_.id,
@@ -222,7 +246,8 @@ class CudaDevice final : public ComputeDevice {
   DeviceInfo info_;
   Stream stream_;
   KernelLibrary library_;
-  cudaKernel_t ensemble_ = nullptr, fold_ = nullptr;
+  cudaKernel_t ensemble_ = nullptr, fold_ = nullptr, frequencies_kernel_ = nullptr;
+  bool frequencies_ = false;
   CudaTarget target_;
   std::string defines_, options_, jit_log_;
   std::string model_source_;  // an expression model's header, or empty

@@ -105,6 +105,7 @@ class OpenclDevice final : public ComputeDevice {
       throw DeviceError(info_.id, "", 0, "ARNOLDWEB_OPENCL_LANES must be 1, 2, 4, 8 or 16");
     real_size_ = fl ? sizeof(float) : sizeof(double);
     options_ = config.defines() + " -DAW_LANES=" + std::to_string(lanes_);
+    frequencies_ = (config.features & AW_F_FREQUENCIES) != 0;
     source_ = ensemble_source(config);
     if (fl && (device_.get_info<cl_device_fp_config>(CL_DEVICE_SINGLE_FP_CONFIG) & CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT))
       options_ += " -cl-fp32-correctly-rounded-divide-sqrt";
@@ -177,6 +178,19 @@ class OpenclDevice final : public ComputeDevice {
     }
   }
 
+  void launch_frequencies(const LaunchRange& r, const LaunchShape& s, const EnsembleBuffers& b) override {
+    auto arg = [&](DeviceMemory* m) -> const compute::buffer& { return m ? cl(*m) : dummy_; };
+    try {
+      compute::kernel& k = frequencies_kernel_;
+      k.set_arg(0, static_cast<cl_ulong>(r.first));
+      k.set_arg(1, static_cast<cl_ulong>(r.first + r.count));
+      for (int i = 0; i < AW_BUF_COUNT; ++i) k.set_arg(2 + i, arg(b.at[i]));
+      queue_.enqueue_1d_range_kernel(k, 0, s.items, wg_);
+    } catch (const compute::opencl_error& e) {
+      rethrow(info_, "clEnqueueNDRangeKernel", e);
+    }
+  }
+
   void launch_fold(DeviceMemory& total, DeviceMemory& part, std::uint64_t n) override {
     try {
       fold_.set_arg(0, cl(total));
@@ -232,6 +246,7 @@ class OpenclDevice final : public ComputeDevice {
     try {
       ensemble_ = program.create_kernel("aw_ensemble");
       fold_ = program.create_kernel("aw_fold");
+      if (frequencies_) frequencies_kernel_ = program.create_kernel("aw_frequencies");
     } catch (const compute::opencl_error& e) {
       rethrow(info_, "clCreateKernel", e);
     }
@@ -241,7 +256,8 @@ class OpenclDevice final : public ComputeDevice {
   DeviceInfo info_;
   compute::context context_;
   compute::command_queue queue_;
-  compute::kernel ensemble_, fold_;
+  compute::kernel ensemble_, fold_, frequencies_kernel_;
+  bool frequencies_ = false;
   compute::buffer dummy_;
   std::string options_;
   std::string source_;  // the program text (ensemble.cl flattened, with an expression model's header)
