@@ -29,7 +29,6 @@ typedef struct {
   lreal over;           /* max_energy_error: 1 where |dE| exceeded the limit in this window */
   lreal inside;         /* confine: 0 once a lane has left the region */
   aw_tangent tangent;   /* indicators: the tangent vector and its observers */
-  aw_freq freq;         /* frequencies: the window in progress */
   lreal asum[3];        /* diffusion with averaging: the sum of the actions so far towards the next sample */
 } aw_fx;
 
@@ -49,7 +48,6 @@ AW_FN void aw_fx_begin(aw_config cfg, aw_fx* fx, aw_lstate* s, lreal accepted, a
   fx->inside = AW_LSPLAT(AW_R(1.0));
   if (AW_HAS(AW_F_ENERGY)) fx->e0 = aw_energy(s, rp);
   aw_tangent_begin(&fx->tangent, rp); /* a few stores; every field defined for the run-time bits of the cpu backend */
-  aw_freq_begin(&fx->freq);
   for (int c = 0; c < 3; ++c) fx->asum[c] = AW_LSPLAT(AW_R(0.0));
   if (AW_HAS(AW_F_DIFFUSION)) aw_actions_store(s->px, s->py, s->pz, 0, l, ip, out);
 }
@@ -82,7 +80,7 @@ AW_FN void aw_fx_sample(aw_config cfg, aw_fx* fx, const aw_lstate* s, aw_i64 k, 
   aw_i64 r;
   if (AW_HAS(AW_F_FREQUENCIES)) {
     const aw_i64 q = aw_divrem(k + 1, ip->frequency_stride, &r) - 1;
-    if (r == 0 && q < 2 * ip->frequency_samples) aw_freq_sample(&fx->freq, s, fx->status, q, l, ip, out);
+    if (r == 0 && q < 2 * ip->frequency_samples) aw_freq_sample(s, fx->status, q, l, ip, out);
   }
   if (AW_HAS(AW_F_DIFFUSION)) aw_actions_sample(fx->asum, s, k, l, rp, ip, out);
 }

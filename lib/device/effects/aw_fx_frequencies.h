@@ -48,21 +48,14 @@ AW_FN AW_GLOBAL real* aw_series_at(aw_outputs out, AW_CONSTANT aw_iparams* ip, a
          rec % AW_SERIES_BLOCK;
 }
 
-/* What a lane keeps between samples: the unwrapped angles at the window's
- * first sample. */
-typedef struct {
-  lreal start[3];
-} aw_freq;
-
-AW_FN void aw_freq_begin(aw_freq* f) {
-  for (int d = 0; d < 3; ++d) f->start[d] = AW_LSPLAT(AW_R(0.0));
-}
-
 /* Sample k (0 .. 2n - 1) of the lanes' angles, multiplied by the window; at
  * the end of a window the mean rates, at the end of the second whether each
- * lane is fine. Every lane, active or not: the buffer holds whole blocks. */
-AW_FN void aw_freq_sample(aw_freq* f, const aw_lstate* s, const int* status, aw_i64 k, aw_lanes l,
-                          AW_CONSTANT aw_iparams* ip, aw_outputs out) {
+ * lane is fine. Every lane, active or not: the buffer holds whole blocks.
+ * Nothing is kept in registers between samples (the unwrapped angles at a
+ * window's first sample wait in the rates' places): the integration between
+ * samples has every register it had without frequencies. */
+AW_FN void aw_freq_sample(const aw_lstate* s, const int* status, aw_i64 k, aw_lanes l, AW_CONSTANT aw_iparams* ip,
+                          aw_outputs out) {
   const int n = (int)ip->frequency_samples;
   const int m = (int)(k % n);
   const aw_u64 first = AW_LANE_RECORD(l, 0); /* the lanes' records are consecutive */
@@ -71,7 +64,7 @@ AW_FN void aw_freq_sample(aw_freq* f, const aw_lstate* s, const int* status, aw_
                               AW_INT_TO_LANE(s->wz) + s->uz};
   const lreal u[3] = {s->ux, s->uy, s->uz};
   if (m == 0)
-    for (int d = 0; d < 3; ++d) f->start[d] = unwrapped[d];
+    for (int d = 0; d < 3; ++d) AW_STORE_LANES(unwrapped[d], aw_series_at(out, ip, first, AW_FREQ_RATE_AT(n, window * 3 + d)));
   const lreal w = AW_LSPLAT(aw_naff_window_at(m, n, (int)ip->frequency_order));
   for (int d = 0; d < 3; ++d) {
     lreal sn, cs;
@@ -83,8 +76,9 @@ AW_FN void aw_freq_sample(aw_freq* f, const aw_lstate* s, const int* status, aw_
   }
   if (m != n - 1) return;
   for (int d = 0; d < 3; ++d) {
-    const lreal rate = (unwrapped[d] - f->start[d]) / (real)(n - 1);
-    AW_STORE_LANES(rate, aw_series_at(out, ip, first, AW_FREQ_RATE_AT(n, window * 3 + d)));
+    AW_GLOBAL real* at = aw_series_at(out, ip, first, AW_FREQ_RATE_AT(n, window * 3 + d));
+    const lreal rate = (unwrapped[d] - AW_LOAD_LANES(at)) / (real)(n - 1);
+    AW_STORE_LANES(rate, at);
   }
   if (window == 1) {
     AW_GLOBAL real* fine = aw_series_at(out, ip, first, AW_FREQ_FINE_AT(n));
