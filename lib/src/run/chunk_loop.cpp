@@ -78,7 +78,7 @@ LocalQueue::LocalQueue(const Plan& plan, Reduction& reduction, const RunOptions&
 
 double LocalQueue::seconds() const { return now_seconds() - start_; }
 
-ChunkWork LocalQueue::next(const ChunkWork& finished, const ChunkOutput& out, std::uint64_t want, Backend& backend) {
+ChunkWork LocalQueue::next(const ChunkWork& finished, ChunkOutput& out, std::uint64_t want, Backend& backend) {
   const std::uint64_t n = plan_.scene.trajectories;
   if (finished.count) {
     reduction_.add(finished, out);

@@ -24,9 +24,10 @@ class WorkQueue {
   // next work for a device that wants about `want` trajectories (count 0:
   // nothing more for this device), with the records it starts from where the
   // plan has them (their storage is the queue's, valid until the next call).
-  // `backend` holds the histograms of every range it ran, for a queue that
+  // The records of `out` may be taken (moved) by the queue: the device fills
+  // them afresh for every chunk. `backend` holds the histograms of every range it ran, for a queue that
   // saves a checkpoint now.
-  virtual ChunkWork next(const ChunkWork& finished, const ChunkOutput& out, std::uint64_t want, Backend& backend) = 0;
+  virtual ChunkWork next(const ChunkWork& finished, ChunkOutput& out, std::uint64_t want, Backend& backend) = 0;
 };
 
 // The records the trajectories [first, first + count) start from when the
@@ -58,7 +59,7 @@ class LocalQueue final : public WorkQueue {
  public:
   using After = std::function<void(Backend&, bool stopping)>;
   LocalQueue(const Plan& plan, Reduction& reduction, const RunOptions& options, After after = {});
-  ChunkWork next(const ChunkWork& finished, const ChunkOutput& out, std::uint64_t want, Backend& backend) override;
+  ChunkWork next(const ChunkWork& finished, ChunkOutput& out, std::uint64_t want, Backend& backend) override;
   bool stopped() const { return stopped_; }
   double seconds() const;  // since the queue was made
 

@@ -51,11 +51,11 @@ class Reduction {
 
   // The outputs of the chunk of trajectories [first, first + count) run over
   // their whole schedule.
-  void add(std::uint64_t first, std::uint64_t count, const ChunkOutput& out);
+  void add(std::uint64_t first, std::uint64_t count, ChunkOutput& out);
   // The outputs of a launch: over the whole schedule, or one time slice
   // (plan.slices > 1: a slice that does not end the trajectories leaves their
   // carry for the next).
-  void add(const ChunkWork& work, const ChunkOutput& out);
+  void add(const ChunkWork& work, ChunkOutput& out);
 
   // Time slices (plan.slices > 1): the trajectories go in fixed blocks
   // (slice_block), and every block finishes slice s before any begins s + 1

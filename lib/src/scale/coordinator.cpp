@@ -43,7 +43,7 @@ class PartCoordinator {
     const std::uint64_t n = job_.parts[k_].plan.scene.trajectories;
     while (finished_count_ < workers_) {
       auto [w, bytes] = t_.receive();
-      const Message m = decode(bytes);
+      Message m = decode(bytes);
       switch (m.type) {
         case MessageType::Request: {
           if (m.count) {

@@ -2,6 +2,7 @@
 #include "scale/worker.hpp"
 
 #include <stdexcept>
+#include <utility>
 
 #include "run/chunk_loop.hpp"
 #include "scale/messages.hpp"
@@ -14,7 +15,7 @@ class ChannelQueue final : public WorkQueue {
   ChannelQueue(Channel& channel, const Plan& plan, std::uint64_t part, const RunOptions& options)
       : channel_(channel), plan_(plan), part_(part), options_(options) {}
 
-  ChunkWork next(const ChunkWork& finished, const ChunkOutput& out, std::uint64_t want, Backend& backend) override {
+  ChunkWork next(const ChunkWork& finished, ChunkOutput& out, std::uint64_t want, Backend& backend) override {
     Message request;
     request.type = MessageType::Request;
     request.part = part_;
@@ -22,7 +23,7 @@ class ChannelQueue final : public WorkQueue {
     request.count = finished.count;
     request.want = want;
     request.stop = options_.stop && options_.stop->load();
-    if (finished.count) request.out = out;
+    if (finished.count) request.out = std::move(out);
     channel_.send(encode(request));
     for (;;) {
       const Message reply = decode(channel_.receive());
