@@ -50,7 +50,7 @@ void print_plan(std::ostream& o, const Plan& p, const std::string& device) {
     o << "auto step    " << p.scene.auto_step.method << " at h = " << p.scene.auto_step.step << " T for max |dE| <= "
       << short_number(p.scene.auto_step.tolerance) << " (pilot: " << p.scene.auto_step.pilot_trajectories << " trajectories, max |dE| "
       << short_number(p.scene.auto_step.pilot_max) << ")\n";
-  for (const auto& w : p.warnings) o << "warning      " << w << "\n";
+  for (const auto& w : p.warnings) o << "warning      " << w.text << "\n";
 }
 
 }  // namespace arnoldweb::cli

@@ -59,14 +59,15 @@ class PythonHook final : public arnoldweb::Progress, public arnoldweb::JobObserv
 // The plans' warnings (a step that will cost accuracy, ...) through Python's
 // warnings, as arnoldweb.PlanWarning, before anything is computed: a filter
 // that turns them into errors stops the run here. A run that writes no
-// directory draws no pictures either: the warning that it cannot is left out.
+// directory draws no pictures either: the warnings about output.images are
+// left out.
 void warn_plans(const arnoldweb::Job& job, bool write) {
   nb::object warn = nb::module_::import_("warnings").attr("warn");
   nb::object category = nb::module_::import_("arnoldweb._errors").attr("PlanWarning");
   for (std::size_t k = 0; k < job.parts.size(); ++k)
-    for (const std::string& w : job.parts[k].plan.warnings) {
-      if (!write && w.rfind("output.images:", 0) == 0) continue;
-      const std::string text = k == 0 ? w : "panel " + job.parts[k].name + ": " + w;
+    for (const arnoldweb::Plan::Warning& w : job.parts[k].plan.warnings) {
+      if (!write && w.key == "output.images") continue;
+      const std::string text = k == 0 ? w.text : "panel " + job.parts[k].name + ": " + w.text;
       warn(nb::str(text.data(), text.size()), category, 2);  // stacklevel 2: the caller of arnoldweb.run
     }
 }

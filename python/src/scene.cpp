@@ -38,7 +38,7 @@ nb::dict plan_dict(const arnoldweb::Plan& p) {
   r["zoom_resolution"] = p.zoom_resolution;
   r["effects"] = p.effects();
   r["kernel_defines"] = p.kernel.defines();
-  r["warnings"] = p.warnings;
+  r["warnings"] = p.warning_lines();
   nb::dict guard;
   guard["value"] = p.guard.value;
   guard["limit"] = p.guard.limit;

@@ -83,8 +83,9 @@ TEST_SUITE("core") {
     const Plan p = make_plan(awtest::scene_from(kPaperE400, {"integrator.allow_unsafe_step=true"}));
     CHECK(p.guard.refused());
     REQUIRE(p.warnings.size() == 1);
-    CHECK(contains(p.warnings[0], "allowed by integrator.allow_unsafe_step"));
-    CHECK(contains(p.warnings[0], "3.563"));
+    CHECK(p.warnings[0].key == "integrator.step");
+    CHECK(contains(p.warnings[0].text, "allowed by integrator.allow_unsafe_step"));
+    CHECK(contains(p.warnings[0].text, "3.563"));
   }
 
   TEST_CASE("guard: the advised safe step at E = 400 brings the energy error down by orders of magnitude") {

@@ -86,7 +86,20 @@ struct Plan {
   double accessible_fraction = 1;       // of the torus, for the initial states
   double effective_perturbation = 0;    // the model's at the scene's energy (the paper's 2/E); 0: it has none
   StepGuard guard;
-  std::vector<std::string> warnings;
+  // What the run will do other than asked, or at a cost (printed by the CLI, written to
+  // summary.json, raised as arnoldweb.PlanWarning): the scene key each concerns, and the line
+  // (key first) that says so.
+  struct Warning {
+    std::string key;   // "integrator.step", "output.images"
+    std::string text;  // the whole line
+    bool operator==(const Warning& o) const { return key == o.key && text == o.text; }
+  };
+  std::vector<Warning> warnings;
+  std::vector<std::string> warning_lines() const {
+    std::vector<std::string> v;
+    for (const Warning& w : warnings) v.push_back(w.text);
+    return v;
+  }
 
   // The kernels' parameter blocks (lib/device/aw_param_blocks.h), filled by
   // make_plan; read by the backends (lib/src/params/kernel_params.hpp).

@@ -80,7 +80,7 @@ std::string summary_json(const Plan& plan, const Result& r, const std::vector<st
                      {"basis", plan.guard.basis},
                      {"overridden", plan.guard.refused() && plan.scene.allow_unsafe_step}};
   j["effects"] = plan.effects();
-  j["warnings"] = plan.warnings;
+  j["warnings"] = plan.warning_lines();
   std::uint64_t smallest = 0, largest = 0;
   for (auto c : r.chunks) {
     smallest = smallest ? std::min(smallest, c) : c;

@@ -13,7 +13,7 @@ namespace {
 Plan plan_resolved(const Scene& scene, const StepResolver& resolve) {
   Plan p = make_plan(scene.step_auto && resolve ? resolve(scene) : scene);
   if (std::string why; p.scene.images && !detail::pictures_available(&why))
-    p.warnings.push_back("output.images: no pictures will be drawn: " + why);
+    p.warnings.push_back({"output.images", "output.images: no pictures will be drawn: " + why});
   return p;
 }
 

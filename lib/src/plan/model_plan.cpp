@@ -201,11 +201,12 @@ void guard_step(const Scene& scene, const ModelDescriptor& model, double omega, 
                 " = pi/2), or integrator.step = \"auto\" with an integrator.tolerance, or set "
                 "integrator.allow_unsafe_step = true to run anyway");
   if (p.guard.refused())
-    p.warnings.push_back("integrator.step: " + what + " = " + fmt(p.guard.value) +
-                         " >= pi, allowed by integrator.allow_unsafe_step");
+    p.warnings.push_back({"integrator.step", "integrator.step: " + what + " = " + fmt(p.guard.value) +
+                                                 " >= pi, allowed by integrator.allow_unsafe_step"});
   else if (p.guard.warned())
-    p.warnings.push_back("integrator.step: " + what + " = " + fmt(p.guard.value) +
-                         " > pi/2; expect a larger energy error (safe step: " + fmt(p.guard.safe_step) + " T)");
+    p.warnings.push_back({"integrator.step", "integrator.step: " + what + " = " + fmt(p.guard.value) +
+                                                 " > pi/2; expect a larger energy error (safe step: " +
+                                                 fmt(p.guard.safe_step) + " T)"});
 }
 
 }  // namespace arnoldweb::detail
