@@ -37,6 +37,7 @@
 
 /* The series' elements after the samples (see above; AW_FREQ_SERIES_REALS in
  * aw_params.h counts them all). */
+#define AW_FREQ_SAMPLE_AT(n, g, m) (((aw_u64)(g) * (aw_u64)(n) + (aw_u64)(m)) * 2)
 #define AW_FREQ_RATE_AT(n, g) (12 * (aw_u64)(n) + (aw_u64)(g))
 #define AW_FREQ_FINE_AT(n) (12 * (aw_u64)(n) + 6)
 
@@ -64,12 +65,13 @@ AW_FN void aw_freq_sample(const aw_lstate* s, const int* status, aw_i64 k, aw_la
                               AW_INT_TO_LANE(s->wz) + s->uz};
   const lreal u[3] = {s->ux, s->uy, s->uz};
   if (m == 0)
-    for (int d = 0; d < 3; ++d) AW_STORE_LANES(unwrapped[d], aw_series_at(out, ip, first, AW_FREQ_RATE_AT(n, window * 3 + d)));
+    for (int d = 0; d < 3; ++d)
+      AW_STORE_LANES(unwrapped[d], aw_series_at(out, ip, first, AW_FREQ_RATE_AT(n, window * 3 + d)));
   const lreal w = AW_LSPLAT(aw_naff_window_at(m, n, (int)ip->frequency_order));
   for (int d = 0; d < 3; ++d) {
     lreal sn, cs;
     aw_sincos2pi(u[d], &sn, &cs);
-    AW_GLOBAL real* at = aw_series_at(out, ip, first, (aw_u64)(((window * 3 + d) * n + m) * 2));
+    AW_GLOBAL real* at = aw_series_at(out, ip, first, AW_FREQ_SAMPLE_AT(n, window * 3 + d, m));
     const lreal re = w * cs, im = w * sn;
     AW_STORE_LANES(re, at);
     AW_STORE_LANES(im, at + AW_SERIES_BLOCK);
@@ -95,7 +97,7 @@ AW_FN AW_GLOBAL const real* aw_freq_signal(AW_CONSTANT aw_iparams* ip, aw_output
   const lreal rate = AW_LOAD_LANES(aw_series_at(out, ip, first, AW_FREQ_RATE_AT(n, g)));
   *whole = AW_RINT_SMALL(rate);
   *start = rate - *whole;
-  return aw_series_at(out, ip, first, (aw_u64)g * (aw_u64)n * 2);
+  return aw_series_at(out, ip, first, AW_FREQ_SAMPLE_AT(n, g, 0));
 }
 
 /* The record of a lane from its six frequencies nu[3 w + d] (turns per T). */

@@ -25,8 +25,8 @@ class WorkQueue {
   // nothing more for this device), with the records it starts from where the
   // plan has them (their storage is the queue's, valid until the next call).
   // The records of `out` may be taken (moved) by the queue: the device fills
-  // them afresh for every chunk. `backend` holds the histograms of every range it ran, for a queue that
-  // saves a checkpoint now.
+  // them afresh for every chunk. `backend` holds the histograms of every
+  // range it ran, for a queue that saves a checkpoint now.
   virtual ChunkWork next(const ChunkWork& finished, ChunkOutput& out, std::uint64_t want, Backend& backend) = 0;
 };
 

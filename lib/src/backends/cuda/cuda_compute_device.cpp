@@ -115,10 +115,7 @@ class CudaDevice final : public ComputeDevice {
     long long seg_first = r.seg_first, seg_end = r.seg_end;
     void* buffers[AW_BUF_COUNT];
     void* args[4 + AW_BUF_COUNT] = {&chunk_first, &chunk_end, &seg_first, &seg_end};
-    for (int i = 0; i < AW_BUF_COUNT; ++i) {
-      buffers[i] = dptr(b.at[i]);
-      args[4 + i] = &buffers[i];
-    }
+    buffer_args(b, buffers, args + 4);
     cuda_check(cudaLaunchKernel(reinterpret_cast<const void*>(ensemble_), dim3(static_cast<unsigned>(s.groups)),
                                 dim3(block_), args, 2 * block_ * real_size_, stream_.get()),
                info_.id, "cudaLaunchKernel",
@@ -131,10 +128,7 @@ class CudaDevice final : public ComputeDevice {
     unsigned long long chunk_first = r.first, chunk_end = r.first + r.count;
     void* buffers[AW_BUF_COUNT];
     void* args[2 + AW_BUF_COUNT] = {&chunk_first, &chunk_end};
-    for (int i = 0; i < AW_BUF_COUNT; ++i) {
-      buffers[i] = dptr(b.at[i]);
-      args[2 + i] = &buffers[i];
-    }
+    buffer_args(b, buffers, args + 2);
     cuda_check(cudaLaunchKernel(reinterpret_cast<const void*>(frequencies_kernel_),
                                 dim3(static_cast<unsigned>(s.groups)), dim3(block_), args, 0, stream_.get()),
                info_.id, "cudaLaunchKernel",
@@ -165,6 +159,15 @@ class CudaDevice final : public ComputeDevice {
   }
 
  private:
+  // The kernels' buffer arguments (AW_BUFFERS, null where the plan needs none): the device
+  // pointers into `buffers`, their addresses into `args`.
+  static void buffer_args(const EnsembleBuffers& b, void** buffers, void** args) {
+    for (int i = 0; i < AW_BUF_COUNT; ++i) {
+      buffers[i] = dptr(b.at[i]);
+      args[i] = &buffers[i];
+    }
+  }
+
   void select() { cuda_check(cudaSetDevice(ordinal_), info_.id, "cudaSetDevice"); }
   std::string label() const { return info_.id + " (" + info_.name + ")"; }
 

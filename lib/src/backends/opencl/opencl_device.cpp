@@ -163,14 +163,11 @@ class OpenclDevice final : public ComputeDevice {
   }
 
   void launch_ensemble(const LaunchRange& r, const LaunchShape& s, const EnsembleBuffers& b) override {
-    auto arg = [&](DeviceMemory* m) -> const compute::buffer& { return m ? cl(*m) : dummy_; };
     try {
       compute::kernel& k = ensemble_;
-      k.set_arg(0, static_cast<cl_ulong>(r.first));
-      k.set_arg(1, static_cast<cl_ulong>(r.first + r.count));
       k.set_arg(2, static_cast<cl_long>(r.seg_first));
       k.set_arg(3, static_cast<cl_long>(r.seg_end));
-      for (int i = 0; i < AW_BUF_COUNT; ++i) k.set_arg(4 + i, arg(b.at[i]));
+      set_range_and_buffers(k, r, b, 4);
       k.set_arg(4 + AW_BUF_COUNT, 2 * wg_ * real_size_, nullptr);
       queue_.enqueue_1d_range_kernel(k, 0, s.items, wg_);
     } catch (const compute::opencl_error& e) {
@@ -179,12 +176,9 @@ class OpenclDevice final : public ComputeDevice {
   }
 
   void launch_frequencies(const LaunchRange& r, const LaunchShape& s, const EnsembleBuffers& b) override {
-    auto arg = [&](DeviceMemory* m) -> const compute::buffer& { return m ? cl(*m) : dummy_; };
     try {
       compute::kernel& k = frequencies_kernel_;
-      k.set_arg(0, static_cast<cl_ulong>(r.first));
-      k.set_arg(1, static_cast<cl_ulong>(r.first + r.count));
-      for (int i = 0; i < AW_BUF_COUNT; ++i) k.set_arg(2 + i, arg(b.at[i]));
+      set_range_and_buffers(k, r, b, 2);
       queue_.enqueue_1d_range_kernel(k, 0, s.items, wg_);
     } catch (const compute::opencl_error& e) {
       rethrow(info_, "clEnqueueNDRangeKernel", e);
@@ -215,6 +209,14 @@ class OpenclDevice final : public ComputeDevice {
   }
 
  private:
+  // The arguments both entry points share: the chunk's trajectories first (0, 1), the buffers
+  // (AW_BUFFERS) from `buffers_at` on, a dummy where the plan needs none.
+  void set_range_and_buffers(compute::kernel& k, const LaunchRange& r, const EnsembleBuffers& b, int buffers_at) {
+    k.set_arg(0, static_cast<cl_ulong>(r.first));
+    k.set_arg(1, static_cast<cl_ulong>(r.first + r.count));
+    for (int i = 0; i < AW_BUF_COUNT; ++i) k.set_arg(buffers_at + i, b.at[i] ? cl(*b.at[i]) : dummy_);
+  }
+
   void build() {
     std::lock_guard<std::mutex> lock(build_mutex);
     auto cache = compute::program_cache::get_global_cache(context_);
