@@ -101,3 +101,41 @@ TEST_SUITE("plan") {
     CHECK(output_names().size() == reported);
   }
 }
+
+TEST_SUITE("plan") {
+  // NVIDIA's OpenCL stopped kernels that reached past 2^31 bytes of the series
+  // buffer (estimates.cpp): its launches keep the series below that, even where
+  // ensemble.chunk asks for more; CUDA and other devices keep their budget.
+  TEST_CASE("largest_chunk: the frequency series of a launch on NVIDIA's OpenCL stay below 2^31 bytes") {
+    const std::string toml = R"(
+      [ensemble]
+      trajectories = 1500000
+      [integrator]
+      method = "yoshida6a"
+      step = 0.02
+      [run]
+      duration = 50
+      average = 50
+      [observe]
+      frequencies = { samples = 512, every = 0.04 }
+    )";
+    DeviceInfo gpu;
+    gpu.backend = "opencl";
+    gpu.name = "NVIDIA H200";
+    gpu.vendor = "NVIDIA Corporation";
+    gpu.memory = 140ull << 30;
+    gpu.max_allocation = 35ull << 30;
+    DeviceInfo cuda = gpu;
+    cuda.backend = "cuda";
+    for (const std::vector<std::string>& sets : {std::vector<std::string>{}, {"ensemble.chunk=200000"}}) {
+      CAPTURE(sets.size());
+      const Plan plan = make_plan(awtest::scene_from(toml, sets, "<chunk>"));
+      const double series = static_cast<double>(detail::params(plan).ints.series_reals) * 8;
+      const std::uint64_t m = largest_chunk(plan, gpu);
+      CHECK(m > 30000);
+      // the buffer holds whole blocks of AW_SERIES_BLOCK trajectories
+      CHECK(static_cast<double>((m + AW_SERIES_BLOCK - 1) / AW_SERIES_BLOCK * AW_SERIES_BLOCK) * series < 2147483648.0);
+      CHECK(largest_chunk(plan, cuda) > 100000);
+    }
+  }
+}

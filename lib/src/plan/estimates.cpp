@@ -53,6 +53,12 @@ std::string histogram_key(const Plan& p) {
   return "observe.velocity_map.nside";
 }
 
+// NVIDIA's OpenCL: the series buffer's addresses below 2^31 bytes (largest_chunk).
+constexpr double kNvidiaOpenclSeriesBytes = 2147483647.0 - 64.0 * (1ull << 20);
+bool nvidia_opencl(const DeviceInfo& d) {
+  return d.backend == "opencl" && !d.is_cpu && (d.vendor.find("NVIDIA") != std::string::npos || d.name.find("NVIDIA") != std::string::npos);
+}
+
 // The largest launch whose frequency series fit in `series_budget` bytes.
 std::uint64_t largest_chunk_within(const Plan& plan, double series_budget) {
   std::uint64_t m = has_states(plan) ? kMaxChunkStates : kMaxChunk;
@@ -70,6 +76,16 @@ std::uint64_t largest_chunk(const Plan& plan) { return largest_chunk_within(plan
 
 std::uint64_t largest_chunk(const Plan& plan, const DeviceInfo& device) {
   if (device.is_cpu) return largest_chunk_within(plan, kCpuSeriesBytes);
+  if (nvidia_opencl(device)) {
+    // NVIDIA's OpenCL stops a kernel that reaches past the first 2^31 bytes of
+    // the series buffer (clFinish: CL_INVALID_COMMAND_QUEUE from 44,000
+    // trajectories of 2 x 512 samples on an H200, driver of 2026-11; CUDA and
+    // PoCL run the same launches): its launches keep the series below that,
+    // ensemble.chunk included.
+    const double series = series_bytes(plan, 8);
+    const std::uint64_t m = largest_chunk_within(plan, kNvidiaOpenclSeriesBytes);
+    return series > 0 ? std::min<std::uint64_t>(m, std::max(1.0, kNvidiaOpenclSeriesBytes / series)) : m;
+  }
   if (device.memory == 0) return largest_chunk(plan);
   double room = static_cast<double>(device.memory) / 4;
   if (device.max_allocation) room = std::min(room, static_cast<double>(device.max_allocation));
