@@ -4,11 +4,8 @@
  * -DAW_MODEL=<id> [-DAW_FLOAT] [-DAW_NATIVE_MATH]. */
 #define AW_LOCAL
 #define AW_BARRIER() __syncthreads()
-/* samples loaded ahead in a frequency pass (aw_naff.h): 4 fit the registers of
- * AW_CUDA_FREQ_MIN_BLOCKS = 6 without spilling */
-#ifndef AW_NAFF_BATCH
-#define AW_NAFF_BATCH 4
-#endif
+/* the frequency analysis: a warp per trajectory (aw_naff.h, "teams") */
+#define AW_NAFF_TEAM_PARALLEL 1
 #include "aw_ensemble.h"
 #include "aw_reduce.h"
 
@@ -46,18 +43,17 @@ extern "C" __global__ void __launch_bounds__(AW_CUDA_MAX_BLOCK, AW_CUDA_MIN_BLOC
 
 /* The frequency analysis of a launch's trajectories, after aw_ensemble over
  * all their segments (effects/aw_fx_frequencies.h). Compiled only where the
- * plan asks for frequencies. Its passes over the samples wait on memory:
- * AW_CUDA_FREQ_MIN_BLOCKS blocks per SM keep more of them in flight. */
+ * plan asks for frequencies. A warp analyses one trajectory, its passes
+ * shared by its threads (aw_naff.h, "teams"; AW_NAFF_TEAM_PARALLEL = 1), in
+ * blocks of 128 threads (kFreqBlock, cuda_compute_device.cpp). */
 #if AW_FEATURES & AW_F_FREQUENCIES
-#ifndef AW_CUDA_FREQ_MIN_BLOCKS
-#define AW_CUDA_FREQ_MIN_BLOCKS 6
-#endif
-extern "C" __global__ void __launch_bounds__(AW_CUDA_MAX_BLOCK, AW_CUDA_FREQ_MIN_BLOCKS)
+extern "C" __global__ void __launch_bounds__(128)
     aw_frequencies(aw_u64 chunk_first, aw_u64 chunk_end AW_BUFFERS(AW_KERNEL_PARAM)) {
-  aw_lanes l = {chunk_first + ((aw_u64)blockIdx.x * blockDim.x + threadIdx.x), chunk_end, chunk_first};
-  if (l.first < chunk_end) {
+  const aw_naff_team team = {(int)(threadIdx.x % AW_NAFF_TEAM), 0};
+  const aw_u64 rec = ((aw_u64)blockIdx.x * blockDim.x + threadIdx.x) / AW_NAFF_TEAM;
+  if (chunk_first + rec < chunk_end) { /* whole warps */
     aw_outputs out = {hist, counters, rec_r, rec_i, series};
-    aw_freq_analyse(l, rp, ip, out);
+    aw_freq_analyse_record(rec, team, rp, ip, out);
   }
 }
 #endif

@@ -46,11 +46,18 @@
 #define AW_NAFF_H
 
 #include "aw_math.h"
+#include "aw_params.h"
 
 #define AW_NAFF_ANCHOR 32   /* rotations recomputed exactly every this many samples */
 #define AW_NAFF_MAX_ITER 40 /* Newton/bisection passes of aw_naff_refine at most */
 #define AW_NAFF_TWO_PI AW_R(6.283185307179586)
 #define AW_NAFF_QUADRATIC AW_R(0.125) /* the margin of the last Newton step (aw_naff_search_step) */
+#ifndef AW_LOCAL
+#define AW_LOCAL /* the address space of a parallel team's scratch (kernels define it) */
+#endif
+#ifndef AW_NAFF_TEAM_PARALLEL
+#define AW_NAFF_TEAM_PARALLEL 0 /* 1: a team's members are work-items (GPUs; see "teams" below) */
+#endif
 
 /* One pass's sums at a frequency: S_0, S_1, S_2 (real and imaginary parts)
  * and the sum of the window's weights. */
@@ -366,55 +373,84 @@ AW_FN void aw_naff_subtract(AW_GLOBAL real* re, AW_GLOBAL real* im, aw_u64 strid
   }
 }
 
-/* ------------------------------------------------------------------ lanes
- * The kernels analyse AW_LANES trajectories at once (one with AW_LANES = 1):
- * lane j's samples at re[k stride + j] (consecutive trajectories, so a
- * sample of all lanes is one vector load), already multiplied by the window
- * chi_p when they were stored (aw_naff_window_at), so a pass has no window
- * to compute. A pass gives every lane the sums of aw_naff_sums_at with p = 0
- * on its samples, bit for bit (the same operations in the same order; the
- * portable lane sin/cos gives aw_sincos2pi_1's bits); aw_naff_refine_lanes
- * then takes every lane through aw_naff_refine's steps, the lanes that have
- * stopped carried along until all have: each lane's frequency is the one
- * aw_naff_refine gives for it (tests/frequencies: "lanes"). */
+/* ------------------------------------------------------------------ teams
+ * The kernels' passes. A window's samples z_k = (re, im) are stored in
+ * groups of G = AW_NAFF_GROUP: samples G q .. G q + G - 1 as 2 G reals (re,
+ * im, re, im, ..) at z + q gs (gs = 2 G where the groups follow each other;
+ * the series buffer interleaves the groups of a block of trajectories:
+ * effects/aw_fx_frequencies.h), already
+ * multiplied by the window chi_p (aw_naff_window_at), and padded with zeros
+ * to np = AW_NAFF_PADDED(n) samples. A pass is shared by a team of T = AW_NAFF_TEAM members: member t
+ * sums the samples k = t + T i (i = 0 .. np/T - 1) in order, its rotation
+ * exp(-2 pi i sigma m_k) recomputed exactly every AW_NAFF_ANCHOR of its
+ * samples and advanced by exp(-2 pi i sigma T) between them; the members'
+ * sums are then added pairwise, p[t] += p[t + h] for h = T/2, T/4, .., 1
+ * (aw_naff_tree). On a GPU the team is a warp, one member a work-item, and
+ * a load of the warp reads eight whole groups (several passes of a
+ * trajectory from the cache); on a CPU one work-item computes every
+ * member, AW_LANES members at a time in a vector. Either way every member's
+ * sums are the same operations in the same order, and so is the tree: the
+ * same bits everywhere (tests/frequencies: "team"). The sums differ from
+ * aw_naff_sums_at's by round-off only (another order of the same terms). */
 
-/* chi_p at sample k of n (aw_naff_sums_at's window, exact at every sample). */
+/* chi_p at sample k of n (aw_naff_sums_at's window, exact at every sample):
+ * the samples are stored multiplied by it. */
 AW_FN real aw_naff_window_at(int k, int n, int p) {
   real s, c;
   aw_sincos2pi_1(((real)k - AW_R(0.5) * (real)(n - 1)) / (real)(n - 1), &s, &c);
   return aw_naff_window(c, p);
 }
 
-typedef struct {
-  lreal s0r, s0i, s1r, s1i, s2r, s2i;
-} aw_naff_lsums;
+/* Add the members' values pairwise (p[0 .. T-1], overwritten): the tree. */
+AW_FN real aw_naff_tree(real* p) {
+  for (int h = AW_NAFF_TEAM / 2; h >= 1; h >>= 1)
+    for (int t = 0; t < h; ++t) p[t] = p[t] + p[t + h];
+  return p[0];
+}
 
-/* One pass for every lane at its own sigma; the samples prewindowed. The
- * samples are loaded AW_NAFF_BATCH at a time before they are used: a pass is
- * a chain of dependent rotations, and a GPU thread that waits for each load
- * in turn keeps one load in flight (a pass then runs at the memory's latency,
- * not its bandwidth). The arithmetic is the same in the same order. */
+/* Members t0 .. t0 + AW_LANES - 1 (a lane each): their sums S_0, S_1, S_2
+ * (re, im) at sigma, v[0 .. 5]. Their samples are loaded AW_NAFF_BATCH ahead
+ * of their use: a member's pass is a chain of dependent rotations, and a GPU
+ * work-item waiting for each load in turn would run at the memory's latency. */
 #ifndef AW_NAFF_BATCH
 #define AW_NAFF_BATCH 8
 #endif
-AW_FN void aw_naff_lsums_at(AW_GLOBAL const real* re, AW_GLOBAL const real* im, aw_u64 stride, int n, lreal sigma,
-                            aw_naff_lsums* out) {
+AW_FN void aw_naff_member_sums(AW_GLOBAL const real* z, aw_u64 gs, int n, int t0, real sigma, lreal* v) {
+  const int chain = AW_NAFF_PADDED(n) / AW_NAFF_TEAM;
   const real centre = AW_R(0.5) * (real)(n - 1);
-  const lreal a = -sigma;
-  lreal dc, ds, ec = AW_LSPLAT(AW_R(1.0)), es = AW_LSPLAT(AW_R(0.0));
-  aw_sincos2pi(a, &ds, &dc);
-  lreal s0r = AW_LSPLAT(AW_R(0.0)), s0i = s0r, s1r = s0r, s1i = s0r, s2r = s0r, s2i = s0r;
-  for (int k0 = 0; k0 < n; k0 += AW_NAFF_BATCH) {
+  real first[AW_LANES];
+  for (int j = 0; j < AW_LANES; ++j) first[j] = (real)(t0 + j) - centre; /* exact: half-integers or integers */
+  const lreal m0 = AW_LOAD_LANES(first);
+  const lreal a = AW_LSPLAT(-sigma);
+  real ds1, dc1;
+  aw_sincos2pi_1(-sigma * (real)AW_NAFF_TEAM, &ds1, &dc1);
+  const lreal dc = AW_LSPLAT(dc1), ds = AW_LSPLAT(ds1);
+  lreal ec = AW_LSPLAT(AW_R(1.0)), es = AW_LSPLAT(AW_R(0.0));
+  lreal s0r = es, s0i = es, s1r = es, s1i = es, s2r = es, s2i = es;
+  for (int i0 = 0; i0 < chain; i0 += AW_NAFF_BATCH) {
     lreal zr[AW_NAFF_BATCH], zi[AW_NAFF_BATCH];
     for (int b = 0; b < AW_NAFF_BATCH; ++b) {
-      const int k = (k0 + b < n) ? k0 + b : n - 1; /* past the end: a sample loaded again, not used */
-      zr[b] = AW_LOAD_LANES(re + (aw_u64)k * stride);
-      zi[b] = AW_LOAD_LANES(im + (aw_u64)k * stride);
+      const int i = (i0 + b < chain) ? i0 + b : chain - 1; /* past the end: loaded again, not used */
+      const int k = t0 + AW_NAFF_TEAM * i;
+#if AW_LANES == 1
+      AW_GLOBAL const real* at = z + (aw_u64)(k / AW_NAFF_GROUP) * gs + 2 * (k % AW_NAFF_GROUP);
+      zr[b] = at[0];
+      zi[b] = at[1];
+#else
+      real r[AW_LANES], m[AW_LANES];
+      for (int j = 0; j < AW_LANES; ++j) {
+        AW_GLOBAL const real* at = z + (aw_u64)((k + j) / AW_NAFF_GROUP) * gs + 2 * ((k + j) % AW_NAFF_GROUP);
+        r[j] = at[0];
+        m[j] = at[1];
+      }
+      zr[b] = AW_LOAD_LANES(r);
+      zi[b] = AW_LOAD_LANES(m);
+#endif
     }
-    for (int b = 0; b < AW_NAFF_BATCH && k0 + b < n; ++b) {
-      const int k = k0 + b;
-      const real m = (real)k - centre;
-      if (k % AW_NAFF_ANCHOR == 0) {
+    for (int b = 0; b < AW_NAFF_BATCH && i0 + b < chain; ++b) {
+      const int i = i0 + b;
+      const lreal m = m0 + AW_LSPLAT((real)(AW_NAFF_TEAM * i)); /* exact */
+      if (i % AW_NAFF_ANCHOR == 0) {
         aw_sincos2pi(a * m, &es, &ec);
       } else {
         const lreal c = AW_FMA(ec, dc, -(es * ds));
@@ -426,61 +462,98 @@ AW_FN void aw_naff_lsums_at(AW_GLOBAL const real* re, AW_GLOBAL const real* im, 
       const lreal ai = AW_FMA(zr[b], es, zi[b] * ec);
       s0r = s0r + ar;
       s0i = s0i + ai;
-      s1r = AW_FMA(AW_LSPLAT(m), ar, s1r);
-      s1i = AW_FMA(AW_LSPLAT(m), ai, s1i);
-      const real mm = m * m;
-      s2r = AW_FMA(AW_LSPLAT(mm), ar, s2r);
-      s2i = AW_FMA(AW_LSPLAT(mm), ai, s2i);
+      s1r = AW_FMA(m, ar, s1r);
+      s1i = AW_FMA(m, ai, s1i);
+      const lreal mm = m * m; /* exact while |m| < 2^26 (double), 2^12 (float: n < 8192) */
+      s2r = AW_FMA(mm, ar, s2r);
+      s2i = AW_FMA(mm, ai, s2i);
     }
   }
-  out->s0r = s0r;
-  out->s0i = s0i;
-  out->s1r = s1r;
-  out->s1i = s1i;
-  out->s2r = s2r;
-  out->s2i = s2i;
+  v[0] = s0r;
+  v[1] = s0i;
+  v[2] = s1r;
+  v[3] = s1i;
+  v[4] = s2r;
+  v[5] = s2i;
 }
 
-/* aw_naff_refine for every lane whose active[j] is set, from sigma0 (lanes):
- * freq[j] its frequency (cycles per sample), ok[j] as aw_naff_refine's ok
- * (freq[j] = sigma0 where 0). Lanes not active are left as they are. */
-AW_FN void aw_naff_refine_lanes(AW_GLOBAL const real* re, AW_GLOBAL const real* im, aw_u64 stride, int n,
-                                lreal sigma0, const int* active, real* freq, int* ok) {
-  real start[AW_LANES];
-  aw_naff_search q[AW_LANES];
-  int running[AW_LANES];
-  AW_STORE_LANES(sigma0, start);
-  int left = 0;
-  for (int j = 0; j < AW_LANES; ++j) {
-    aw_naff_search_begin(&q[j], start[j]);
-    running[j] = active[j];
-    left += running[j];
+/* Who computes a pass: on a GPU (AW_NAFF_TEAM_PARALLEL, one lane) this
+ * work-item is member `member` of a team whose work-items meet in `scratch`
+ * (OpenCL: 6 T reals of local memory, the team a work-group; CUDA: a warp,
+ * by shuffles, no scratch); elsewhere one work-item is the whole team. */
+typedef struct {
+  int member;
+  AW_LOCAL real* scratch;
+} aw_naff_team;
+
+#if AW_NAFF_TEAM_PARALLEL
+typedef char aw_naff_team_parallel_needs_one_lane[(AW_LANES == 1) ? 1 : -1];
+#if defined(AW_CUDA)
+typedef char aw_naff_team_is_a_warp[(AW_NAFF_TEAM == 32) ? 1 : -1];
+#endif
+/* The tree across the team's work-items: every member gets the total. With
+ * shuffles, member t adds the value of member t ^ h: its node of the tree
+ * (addition commutes, bit for bit). */
+AW_FN void aw_naff_team_tree(aw_naff_team team, real* v) {
+#if defined(AW_CUDA)
+  for (int h = AW_NAFF_TEAM / 2; h >= 1; h >>= 1)
+    for (int q = 0; q < 6; ++q) v[q] = v[q] + __shfl_xor_sync(0xffffffffu, v[q], h);
+#else
+  const int t = team.member;
+  AW_LOCAL real* p = team.scratch; /* p[q T + t]: value q of member t */
+  for (int q = 0; q < 6; ++q) p[q * AW_NAFF_TEAM + t] = v[q];
+  AW_BARRIER();
+  for (int h = AW_NAFF_TEAM / 2; h >= 1; h >>= 1) {
+    if (t < h)
+      for (int q = 0; q < 6; ++q) p[q * AW_NAFF_TEAM + t] = p[q * AW_NAFF_TEAM + t] + p[q * AW_NAFF_TEAM + t + h];
+    AW_BARRIER();
   }
-  for (int it = 0; it < AW_NAFF_MAX_ITER && left > 0; ++it) {
-    real x[AW_LANES];
-    for (int j = 0; j < AW_LANES; ++j) x[j] = q[j].x;
-    aw_naff_lsums ls;
-    aw_naff_lsums_at(re, im, stride, n, AW_LOAD_LANES(x), &ls);
-    real s0r[AW_LANES], s0i[AW_LANES], s1r[AW_LANES], s1i[AW_LANES], s2r[AW_LANES], s2i[AW_LANES];
-    AW_STORE_LANES(ls.s0r, s0r);
-    AW_STORE_LANES(ls.s0i, s0i);
-    AW_STORE_LANES(ls.s1r, s1r);
-    AW_STORE_LANES(ls.s1i, s1i);
-    AW_STORE_LANES(ls.s2r, s2r);
-    AW_STORE_LANES(ls.s2i, s2i);
-    left = 0;
-    for (int j = 0; j < AW_LANES; ++j) {
-      if (!running[j]) continue;
-      const aw_naff_sums s = {s0r[j], s0i[j], s1r[j], s1i[j], s2r[j], s2i[j], AW_R(1.0)};
-      running[j] = aw_naff_search_step(&q[j], &s, n);
-      left += running[j];
-    }
+  for (int q = 0; q < 6; ++q) v[q] = p[q * AW_NAFF_TEAM];
+  AW_BARRIER(); /* every member has read the totals before the next pass writes */
+#endif
+}
+#endif
+
+/* One pass of the team at sigma: the sums of aw_naff_sums_at with p = 0 (the
+ * samples prewindowed), in the team's order. */
+AW_FN void aw_naff_team_sums(AW_GLOBAL const real* z, aw_u64 gs, int n, real sigma, aw_naff_team team,
+                             aw_naff_sums* s) {
+  real v[6];
+#if AW_NAFF_TEAM_PARALLEL
+  aw_naff_member_sums(z, gs, n, team.member, sigma, v);
+  aw_naff_team_tree(team, v);
+#else
+  (void)team;
+  real p[6][AW_NAFF_TEAM];
+  for (int t0 = 0; t0 < AW_NAFF_TEAM; t0 += AW_LANES) {
+    lreal lv[6];
+    aw_naff_member_sums(z, gs, n, t0, sigma, lv);
+    for (int q = 0; q < 6; ++q) AW_STORE_LANES(lv[q], &p[q][t0]);
   }
-  for (int j = 0; j < AW_LANES; ++j) {
-    if (!active[j]) continue;
-    ok[j] = q[j].done;
-    freq[j] = q[j].done ? q[j].x : start[j];
-  }
+  for (int q = 0; q < 6; ++q) v[q] = aw_naff_tree(p[q]);
+#endif
+  s->s0r = v[0];
+  s->s0i = v[1];
+  s->s1r = v[2];
+  s->s1i = v[3];
+  s->s2r = v[4];
+  s->s2i = v[5];
+  s->wsum = AW_R(1.0);
+}
+
+/* aw_naff_refine's search from sigma0 with the team's passes: *freq its
+ * frequency (cycles per sample; sigma0 where *ok = 0), *ok as aw_naff_refine's
+ * ok. Every member of a parallel team takes the same steps (the same totals). */
+AW_FN void aw_naff_refine_team(AW_GLOBAL const real* z, aw_u64 gs, int n, real sigma0, aw_naff_team team, real* freq,
+                               int* ok) {
+  aw_naff_search q;
+  aw_naff_search_begin(&q, sigma0);
+  aw_naff_sums s;
+  aw_naff_team_sums(z, gs, n, q.x, team, &s);
+  for (int it = 0; it < AW_NAFF_MAX_ITER && aw_naff_search_step(&q, &s, n); ++it)
+    aw_naff_team_sums(z, gs, n, q.x, team, &s);
+  *ok = q.done;
+  *freq = q.done ? q.x : sigma0;
 }
 
 #endif /* AW_NAFF_H */

@@ -90,12 +90,21 @@
 #define AW_OUT_FREQUENCIES 4   /* AW_FREQ_REALS reals (effects/aw_fx_frequencies.h) */
 #define AW_OUT_ACTIONS 5       /* 3 (K + 1) reals, 1 integer (effects/aw_fx_diffusion.h) */
 #define AW_FREQ_REALS 7
+/* A frequency pass over a window's samples is shared by a team of
+ * AW_NAFF_TEAM members (aw_naff.h): member t takes samples t, t + T, ...;
+ * a window holds its samples padded with zeros to a multiple of the team. */
+#define AW_NAFF_TEAM 32
+#define AW_NAFF_PADDED(n) ((((n) + AW_NAFF_TEAM - 1) / AW_NAFF_TEAM) * AW_NAFF_TEAM)
+/* ... and stored in groups of AW_NAFF_GROUP consecutive samples (64 bytes in
+ * double: what a GPU's memory delivers at once; aw_naff.h, "teams"). */
+#define AW_NAFF_GROUP 4
 /* The frequencies' work memory per trajectory (series buffer) for windows of
- * n samples: both windows' samples, the mean rates, a flag
+ * n samples: both windows' samples (padded), the mean rates, a flag, and one
+ * real unused so that every trajectory's series starts 32 bytes apart
  * (effects/aw_fx_frequencies.h). */
-#define AW_FREQ_SERIES_REALS(n) (12 * (n) + 7)
-/* The series buffer holds blocks of this many trajectories (a warp; every
- * lane width divides it). */
+#define AW_FREQ_SERIES_REALS(n) (12 * AW_NAFF_PADDED(n) + 8)
+/* The series buffer is allocated in blocks of this many trajectories (the
+ * kernels store every lane of a group; every lane width divides it). */
 #define AW_SERIES_BLOCK 32
 #define AW_OUT_SLOTS 8
 

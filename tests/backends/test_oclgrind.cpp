@@ -143,7 +143,7 @@ std::vector<Variant> variants() {
                  s.grid_resolution = {7, 3};
                  s.fli = s.megno = true;
                }});
-  // frequency analysis (the lane NAFF at the windows' ends) and the actions' samples
+  // frequency analysis (the sampling, the analysis kernel) and the actions' samples
   v.push_back({"frequencies and diffusion", [](Scene& s) {
                  s.duration = s.average = 0.64;
                  s.frequencies = true;
@@ -175,21 +175,31 @@ void run_variants(const std::function<bool(const Plan&)>& keep) {
   REQUIRE_MESSAGE(dev.name.find("Oclgrind") != std::string::npos,
                   dev.id << " is " << dev.name << ", not Oclgrind's simulator");
   int ran = 0;
-  for (const int lanes : {8, 1}) {
+  // eight lanes (a CPU's), one lane, and one lane with the frequency analysis by
+  // teams of work-items (a GPU's: ARNOLDWEB_OPENCL_TEAMS, aw_naff.h "teams")
+  struct Mode {
+    int lanes;
+    bool teams;
+  };
+  for (const Mode mode : {Mode{8, false}, Mode{1, false}, Mode{1, true}}) {
+    const int lanes = mode.lanes;
     ::setenv("ARNOLDWEB_OPENCL_LANES", std::to_string(lanes).c_str(), 1);
+    ::setenv("ARNOLDWEB_OPENCL_TEAMS", mode.teams ? "1" : "0", 1);
     for (const Variant& variant : variants()) {
       for (const Precision precision : {Precision::Double, Precision::Float}) {
         Scene s = tiny(precision);
         variant.scene(s);
         Plan plan = make_plan(s);
         if (variant.plan) variant.plan(plan);
-        if (!keep(plan)) continue;
+        if (!keep(plan) || (mode.teams && !(plan.kernel.features & AW_F_FREQUENCIES))) continue;
         CAPTURE(variant.name);
+        CAPTURE(mode.teams);
         CAPTURE(to_string(precision));
         CAPTURE(lanes);
         const Result r = awtest::run_on(dev.id, plan);
         ++ran;
         REQUIRE(r.kernel.find("-DAW_LANES=" + std::to_string(lanes)) != std::string::npos);
+        CHECK((r.kernel.find("-DAW_NAFF_TEAM_PARALLEL=1") != std::string::npos) == mode.teams);
         CHECK(r.completed == s.trajectories);
         CHECK(r.binned + r.flagged() + r.left_region == r.trajectories);
         if (!variant.bitwise) continue;
@@ -216,6 +226,7 @@ void run_variants(const std::function<bool(const Plan&)>& keep) {
     }
   }
   ::unsetenv("ARNOLDWEB_OPENCL_LANES");
+  ::unsetenv("ARNOLDWEB_OPENCL_TEAMS");
   MESSAGE(ran << " kernel runs on " << dev.name);
   CHECK(ran > 0);
 }

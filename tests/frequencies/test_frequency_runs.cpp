@@ -212,10 +212,13 @@ TEST_SUITE("frequency-runs") {
   }
 
   // The paper's model at E = 15: chaotic orbits, whose refinements take from 2 to
-  // more than 20 passes (2-23, mean 5, on the default scene's ensemble). A GPU work-item refines its trajectory's six signals in one loop
-  // of passes (aw_freq_analyse with AW_LANES = 1), a CPU vector the lanes' same
-  // signal together: the same frequencies, bit for bit. OpenCL devices run both
-  // widths (ARNOLDWEB_OPENCL_LANES = 1 is a GPU's).
+  // more than 20 passes (2-23, mean 5, on the default scene's ensemble). A GPU
+  // analyses a trajectory with a team of work-items, one member each (a warp in
+  // CUDA, a work-group in OpenCL: AW_NAFF_TEAM_PARALLEL), a CPU with one
+  // work-item computing the members a vector at a time: the same frequencies,
+  // bit for bit. OpenCL devices run every form: eight lanes (a CPU's), one lane
+  // (ARNOLDWEB_OPENCL_LANES=1), and the teams of work-items a GPU runs
+  // (ARNOLDWEB_OPENCL_TEAMS=1 with one lane).
   TEST_CASE("frequencies of chaotic orbits: every device and lane width gives the cpu backend's bits") {
     const Plan plan = make_plan(awtest::scene_from(R"(
       [model]
@@ -239,14 +242,20 @@ TEST_SUITE("frequency-runs") {
     int finite = 0;
     for (double v : f) finite += std::isfinite(v) ? 1 : 0;
     CHECK(finite > 250 * AW_FREQ_REALS);  // most orbits give every frequency
+    struct Form {
+      const char *lanes, *teams;
+    };
     for (const auto& device : awtest::devices_under_test()) {
-      for (const char* lanes : {"", "1"}) {
-        if (*lanes && device.backend != "opencl") continue;
+      for (const Form form : {Form{"", ""}, Form{"8", "0"}, Form{"1", "0"}, Form{"1", "1"}}) {
+        if (*form.lanes && device.backend != "opencl") continue;
         CAPTURE(device.id);
-        CAPTURE(lanes);
-        if (*lanes) ::setenv("ARNOLDWEB_OPENCL_LANES", lanes, 1);
+        CAPTURE(form.lanes);
+        CAPTURE(form.teams);
+        if (*form.lanes) ::setenv("ARNOLDWEB_OPENCL_LANES", form.lanes, 1);
+        if (*form.teams) ::setenv("ARNOLDWEB_OPENCL_TEAMS", form.teams, 1);
         const Result r = awtest::run_on(device.id, plan);
         ::unsetenv("ARNOLDWEB_OPENCL_LANES");
+        ::unsetenv("ARNOLDWEB_OPENCL_TEAMS");
         CHECK(awtest::first_difference(r.reals("frequencies"), f) == -1);
       }
     }

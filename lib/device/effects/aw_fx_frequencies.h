@@ -8,17 +8,25 @@
  * ip->frequency_stride segments, sample k = 0 .. 2n - 1 at the end of segment
  * (k + 1) stride - 1, window k / n (aw_freq_sample). The analysis kernel
  * (aw_freq_analyse), launched after it over the same trajectories, refines
- * every angle's frequency in each window. They meet in the series buffer
- * (aw_series_at): per block of AW_SERIES_BLOCK consecutive trajectories of a
- * launch, element e of all of them side by side, then element e + 1, so that
- * a warp's pass over one signal reads one stream of memory:
- *   e = (g n + m) 2 + c            sample m (0 .. n - 1) of signal g = 3 w + d
- *                                  (window w, angle d), part c (re, im),
- *                                  multiplied by the window chi_p;
- *   e = 12 n + g                   the mean rate of signal g over its window
- *                                  (cycles per sample, windings included);
- *   e = 12 n + 6                   1 where the trajectory was fine at the end
- *                                  of the second window, else 0.
+ * every angle's frequency in each window. They meet in the series buffer, in
+ * blocks of AW_SERIES_BLOCK = 32 consecutive trajectories of a launch
+ * (ip->series_reals reals each):
+ *   samples     the samples of signal g = 3 w + d (window w, angle d) in
+ *               groups q = m / G of G = AW_NAFF_GROUP (m = 0 .. np - 1;
+ *               np = AW_NAFF_PADDED(n), zero past n), each group of
+ *               trajectory j of the block 2 G reals (re, im of its samples in
+ *               turn), multiplied by the window chi_p, at
+ *               ((g np/G + q) 32 + j) 2 G;
+ *   tail        element e of trajectory j at (12 np + e) 32 + j: e = g the
+ *               mean rate of signal g over its window (cycles per sample,
+ *               windings included), e = 6 1 where the trajectory was fine at
+ *               the end of the second window, else 0.
+ * A warp of the integration stores one sample of its 32 trajectories within
+ * 2 KB, whose sectors the next samples complete in the cache; a team of the
+ * analysis (aw_naff.h, "teams") reads one trajectory's groups whole, eight
+ * of them in a load of its warp. (One trajectory's series in one piece was
+ * tried: the sampling then wrote 1.7 times the series to memory. Groups of
+ * two samples, 32 bytes: the analysis read 1.7 times the series.)
  * Kept apart, the integration kernel carries none of the analysis's registers
  * and the analysis runs at its own occupancy (its passes over the samples are
  * bound by memory; docs/frequencies.md, "What the frequencies cost").
@@ -35,26 +43,50 @@
 #include "aw_naff.h"
 #include "effects/aw_fx_common.h"
 
-/* The series' elements after the samples (see above; AW_FREQ_SERIES_REALS in
- * aw_params.h counts them all). */
-#define AW_FREQ_SAMPLE_AT(n, g, m) (((aw_u64)(g) * (aw_u64)(n) + (aw_u64)(m)) * 2)
-#define AW_FREQ_RATE_AT(n, g) (12 * (aw_u64)(n) + (aw_u64)(g))
-#define AW_FREQ_FINE_AT(n) (12 * (aw_u64)(n) + 6)
+/* Reals between a trajectory's consecutive groups of samples (see above). */
+#define AW_FREQ_GROUP_STRIDE (2 * AW_NAFF_GROUP * (aw_u64)AW_SERIES_BLOCK)
+#define AW_FREQ_TAIL_RATE(g) (g)
+#define AW_FREQ_TAIL_FINE 6
 
-/* Element e of the series of record rec (see above). Lane groups never cross
- * a block: */
-typedef char aw_lanes_divide_series_block[(AW_SERIES_BLOCK % AW_LANES == 0) ? 1 : -1];
-AW_FN AW_GLOBAL real* aw_series_at(aw_outputs out, AW_CONSTANT aw_iparams* ip, aw_u64 rec, aw_u64 e) {
-  return out.series + (rec / AW_SERIES_BLOCK) * ((aw_u64)ip->series_reals * AW_SERIES_BLOCK) + e * AW_SERIES_BLOCK +
-         rec % AW_SERIES_BLOCK;
+/* The block of record rec, and its place j in the block. */
+AW_FN AW_GLOBAL real* aw_series_block(aw_outputs out, AW_CONSTANT aw_iparams* ip, aw_u64 rec) {
+  return out.series + (rec / AW_SERIES_BLOCK) * ((aw_u64)ip->series_reals * AW_SERIES_BLOCK);
+}
+
+/* Sample m (0 .. np - 1) of signal g of record rec: its re, then its im. */
+AW_FN AW_GLOBAL real* aw_series_sample(aw_outputs out, AW_CONSTANT aw_iparams* ip, aw_u64 rec, int g, int m) {
+  const aw_u64 np = (aw_u64)AW_NAFF_PADDED((int)ip->frequency_samples);
+  const aw_u64 group = (aw_u64)g * (np / AW_NAFF_GROUP) + (aw_u64)(m / AW_NAFF_GROUP);
+  return aw_series_block(out, ip, rec) + group * AW_FREQ_GROUP_STRIDE + (rec % AW_SERIES_BLOCK) * (2 * AW_NAFF_GROUP) +
+         2 * (aw_u64)(m % AW_NAFF_GROUP);
+}
+
+/* Element e of the tail of record rec. */
+AW_FN AW_GLOBAL real* aw_series_tail(aw_outputs out, AW_CONSTANT aw_iparams* ip, aw_u64 rec, int e) {
+  const aw_u64 np = (aw_u64)AW_NAFF_PADDED((int)ip->frequency_samples);
+  return aw_series_block(out, ip, rec) + (12 * np + (aw_u64)e) * AW_SERIES_BLOCK + rec % AW_SERIES_BLOCK;
+}
+
+/* Element e of the tails of the lanes' records (first, first + 1, ...),
+ * stored from and loaded into a vector. */
+AW_FN void aw_series_store(aw_outputs out, AW_CONSTANT aw_iparams* ip, aw_u64 first, int e, lreal v) {
+  real x[AW_LANES];
+  AW_STORE_LANES(v, x);
+  for (int j = 0; j < AW_LANES; ++j) *aw_series_tail(out, ip, first + (aw_u64)j, e) = x[j];
+}
+AW_FN lreal aw_series_load(aw_outputs out, AW_CONSTANT aw_iparams* ip, aw_u64 first, int e) {
+  real x[AW_LANES];
+  for (int j = 0; j < AW_LANES; ++j) x[j] = *aw_series_tail(out, ip, first + (aw_u64)j, e);
+  return AW_LOAD_LANES(x);
 }
 
 /* Sample k (0 .. 2n - 1) of the lanes' angles, multiplied by the window; at
- * the end of a window the mean rates, at the end of the second whether each
- * lane is fine. Every lane, active or not: the buffer holds whole blocks.
- * Nothing is kept in registers between samples (the unwrapped angles at a
- * window's first sample wait in the rates' places): the integration between
- * samples has every register it had without frequencies. */
+ * the end of a window the mean rates and the padding, at the end of the
+ * second whether each lane is fine. Every lane, active or not: the buffer
+ * holds whole blocks. Nothing is kept in registers between samples (the
+ * unwrapped angles at a window's first sample wait in the rates' places):
+ * the integration between samples has every register it had without
+ * frequencies. */
 AW_FN void aw_freq_sample(const aw_lstate* s, const int* status, aw_i64 k, aw_lanes l, AW_CONSTANT aw_iparams* ip,
                           aw_outputs out) {
   const int n = (int)ip->frequency_samples;
@@ -65,77 +97,77 @@ AW_FN void aw_freq_sample(const aw_lstate* s, const int* status, aw_i64 k, aw_la
                               AW_INT_TO_LANE(s->wz) + s->uz};
   const lreal u[3] = {s->ux, s->uy, s->uz};
   if (m == 0)
-    for (int d = 0; d < 3; ++d)
-      AW_STORE_LANES(unwrapped[d], aw_series_at(out, ip, first, AW_FREQ_RATE_AT(n, window * 3 + d)));
-  const lreal w = AW_LSPLAT(aw_naff_window_at(m, n, (int)ip->frequency_order));
+    for (int d = 0; d < 3; ++d) aw_series_store(out, ip, first, AW_FREQ_TAIL_RATE(window * 3 + d), unwrapped[d]);
+  const real w = aw_naff_window_at(m, n, (int)ip->frequency_order);
   for (int d = 0; d < 3; ++d) {
     lreal sn, cs;
     aw_sincos2pi(u[d], &sn, &cs);
-    AW_GLOBAL real* at = aw_series_at(out, ip, first, AW_FREQ_SAMPLE_AT(n, window * 3 + d, m));
-    const lreal re = w * cs, im = w * sn;
-    AW_STORE_LANES(re, at);
-    AW_STORE_LANES(im, at + AW_SERIES_BLOCK);
+    real re[AW_LANES], im[AW_LANES];
+    const lreal wr = AW_LSPLAT(w) * cs, wi = AW_LSPLAT(w) * sn;
+    AW_STORE_LANES(wr, re);
+    AW_STORE_LANES(wi, im);
+    for (int j = 0; j < AW_LANES; ++j) {
+      AW_GLOBAL real* at = aw_series_sample(out, ip, first + (aw_u64)j, window * 3 + d, m);
+      at[0] = re[j];
+      at[1] = im[j];
+    }
   }
   if (m != n - 1) return;
   for (int d = 0; d < 3; ++d) {
-    AW_GLOBAL real* at = aw_series_at(out, ip, first, AW_FREQ_RATE_AT(n, window * 3 + d));
-    const lreal rate = (unwrapped[d] - AW_LOAD_LANES(at)) / (real)(n - 1);
-    AW_STORE_LANES(rate, at);
-  }
-  if (window == 1) {
-    AW_GLOBAL real* fine = aw_series_at(out, ip, first, AW_FREQ_FINE_AT(n));
-    for (int j = 0; j < AW_LANES; ++j) fine[j] = (status[j] == AW_STATUS_OK) ? AW_R(1.0) : AW_R(0.0);
-  }
-}
-
-/* The start of the refinement of signal g = 3 w + d (window w, angle d) of
- * lane group `first`: its samples, and its mean rate split into the whole
- * cycles per sample (which alias) and the rest (the start). */
-AW_FN AW_GLOBAL const real* aw_freq_signal(AW_CONSTANT aw_iparams* ip, aw_outputs out, aw_u64 first, int g,
-                                           lreal* whole, lreal* start) {
-  const int n = (int)ip->frequency_samples;
-  const lreal rate = AW_LOAD_LANES(aw_series_at(out, ip, first, AW_FREQ_RATE_AT(n, g)));
-  *whole = AW_RINT_SMALL(rate);
-  *start = rate - *whole;
-  return aw_series_at(out, ip, first, AW_FREQ_SAMPLE_AT(n, g, 0));
-}
-
-/* The record of a lane from its six frequencies nu[3 w + d] (turns per T). */
-AW_FN void aw_freq_record(aw_lanes l, int j, const real* nu, AW_CONSTANT aw_iparams* ip, aw_outputs out) {
-  const int n = (int)ip->frequency_samples;
-  const real nan = aw_nan_real();
-  AW_GLOBAL real* rec = aw_record_r(out, ip, AW_OUT_FREQUENCIES, AW_LANE_RECORD(l, j));
-  const aw_u64 first = AW_LANE_RECORD(l, 0);
-  const int fine = aw_series_at(out, ip, first, AW_FREQ_FINE_AT(n))[j] != AW_R(0.0);
-  real dx = nu[3] - nu[0], dy = nu[4] - nu[1], dz = nu[5] - nu[2];
-  for (int d = 0; d < 6; ++d) rec[d] = fine ? nu[d] : nan;
-  rec[6] = fine ? AW_SQRT(AW_FMA(dz, dz, AW_FMA(dy, dy, dx * dx))) : nan;
-}
-
-/* The analysis of a group of lanes (a vector of trajectories on CPUs, one on
- * GPUs): the lanes refine the same signal together, signal after signal
- * (aw_naff_refine_lanes). On a GPU the work-items of a warp thus read one
- * signal at a time, side by side in memory (a warp whose work-items each went
- * on to their next signal as they finished, tried, read six signals at once
- * from scattered sectors: more bytes for fewer passes; docs/frequencies.md). */
-AW_FN void aw_freq_analyse(aw_lanes l, AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip, aw_outputs out) {
-  const int n = (int)ip->frequency_samples;
-  const aw_u64 first = AW_LANE_RECORD(l, 0);
-  int active[AW_LANES];
-  for (int j = 0; j < AW_LANES; ++j) active[j] = AW_LANE_ACTIVE(l, j);
-  real nu[AW_LANES][6];
-  for (int g = 0; g < 6; ++g) {
-    lreal whole, start;
-    AW_GLOBAL const real* re = aw_freq_signal(ip, out, first, g, &whole, &start);
-    real wh[AW_LANES], f[AW_LANES] = {0};
-    int ok[AW_LANES] = {0}; /* set for the active lanes only */
-    AW_STORE_LANES(whole, wh);
-    aw_naff_refine_lanes(re, re + AW_SERIES_BLOCK, 2 * AW_SERIES_BLOCK, n, start, active, f, ok);
+    const int e = AW_FREQ_TAIL_RATE(window * 3 + d);
+    aw_series_store(out, ip, first, e, (unwrapped[d] - aw_series_load(out, ip, first, e)) / (real)(n - 1));
     for (int j = 0; j < AW_LANES; ++j)
-      nu[j][g] = !active[j] ? AW_R(0.0) : ok[j] ? (f[j] + wh[j]) / rp->frequency_every : aw_nan_real();
+      for (int pad = n; pad < AW_NAFF_PADDED(n); ++pad) {
+        AW_GLOBAL real* at = aw_series_sample(out, ip, first + (aw_u64)j, window * 3 + d, pad);
+        at[0] = AW_R(0.0);
+        at[1] = AW_R(0.0);
+      }
   }
-  for (int j = 0; j < AW_LANES; ++j)
-    if (active[j]) aw_freq_record(l, j, nu[j], ip, out);
+  if (window == 1)
+    for (int j = 0; j < AW_LANES; ++j) {
+      AW_GLOBAL real* fine = aw_series_tail(out, ip, first + (aw_u64)j, AW_FREQ_TAIL_FINE);
+      *fine = (status[j] == AW_STATUS_OK) ? AW_R(1.0) : AW_R(0.0);
+    }
 }
+
+/* The frequency (turns per T) of signal g = 3 w + d (window w, angle d) of
+ * record rec, refined by the team from its mean rate: the rate's whole cycles
+ * per sample say which alias of the sampled frequency is the true one, the
+ * rest is the start. NaN where no maximum was found. */
+AW_FN real aw_freq_signal(AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip, aw_outputs out, aw_u64 rec, int g,
+                          aw_naff_team team) {
+  const real rate = *aw_series_tail(out, ip, rec, AW_FREQ_TAIL_RATE(g));
+  const real whole = AW_RINT_SMALL(rate);
+  real f;
+  int ok;
+  aw_naff_refine_team(aw_series_sample(out, ip, rec, g, 0), AW_FREQ_GROUP_STRIDE, (int)ip->frequency_samples,
+                      rate - whole, team, &f, &ok);
+  return ok ? (f + whole) / rp->frequency_every : aw_nan_real();
+}
+
+/* The analysis of record rec: its six frequencies and the record
+ * (AW_OUT_FREQUENCIES); written by member 0 of a parallel team. */
+AW_FN void aw_freq_analyse_record(aw_u64 rec, aw_naff_team team, AW_CONSTANT aw_rparams* rp,
+                                  AW_CONSTANT aw_iparams* ip, aw_outputs out) {
+  real nu[6];
+  for (int g = 0; g < 6; ++g) nu[g] = aw_freq_signal(rp, ip, out, rec, g, team);
+  if (team.member != 0) return;
+  const real nan = aw_nan_real();
+  const int fine = *aw_series_tail(out, ip, rec, AW_FREQ_TAIL_FINE) != AW_R(0.0);
+  AW_GLOBAL real* r = aw_record_r(out, ip, AW_OUT_FREQUENCIES, rec);
+  const real dx = nu[3] - nu[0], dy = nu[4] - nu[1], dz = nu[5] - nu[2];
+  for (int d = 0; d < 6; ++d) r[d] = fine ? nu[d] : nan;
+  r[6] = fine ? AW_SQRT(AW_FMA(dz, dz, AW_FMA(dy, dy, dx * dx))) : nan;
+}
+
+#if !AW_NAFF_TEAM_PARALLEL
+/* The analysis of a group of lanes on a CPU: one trajectory after another,
+ * the team's members AW_LANES at a time in a vector (aw_naff.h, "teams"). */
+AW_FN void aw_freq_analyse(aw_lanes l, AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip, aw_outputs out) {
+  const aw_naff_team team = {0, 0};
+  for (int j = 0; j < AW_LANES; ++j)
+    if (AW_LANE_ACTIVE(l, j)) aw_freq_analyse_record(AW_LANE_RECORD(l, j), team, rp, ip, out);
+}
+#endif
 
 #endif /* AW_FX_FREQUENCIES_H */

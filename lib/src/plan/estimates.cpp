@@ -56,7 +56,8 @@ std::string histogram_key(const Plan& p) {
 // NVIDIA's OpenCL: the series buffer's addresses below 2^31 bytes (largest_chunk).
 constexpr double kNvidiaOpenclSeriesBytes = 2147483647.0 - 64.0 * (1ull << 20);
 bool nvidia_opencl(const DeviceInfo& d) {
-  return d.backend == "opencl" && !d.is_cpu && (d.vendor.find("NVIDIA") != std::string::npos || d.name.find("NVIDIA") != std::string::npos);
+  const bool nvidia = d.vendor.find("NVIDIA") != std::string::npos || d.name.find("NVIDIA") != std::string::npos;
+  return d.backend == "opencl" && !d.is_cpu && nvidia;
 }
 
 // The largest launch whose frequency series fit in `series_budget` bytes.

@@ -26,6 +26,7 @@ namespace {
 
 constexpr unsigned kBlock = 128;     // threads per block (a power of two: aw_group_reduce)
 constexpr unsigned kFoldBlock = 256;
+constexpr unsigned kFreqBlock = 128;  // threads per block of aw_frequencies (AW_CUDA_FREQ_BLOCK's default)
 
 class CudaMemory final : public DeviceMemory {
  public:
@@ -122,15 +123,19 @@ class CudaDevice final : public ComputeDevice {
                "aw_ensemble over trajectories [" + std::to_string(r.first) + ", " + std::to_string(r.first + r.count) + ")");
   }
 
-  void launch_frequencies(const LaunchRange& r, const LaunchShape& s, const EnsembleBuffers& b) override {
+  void launch_frequencies(const LaunchRange& r, const LaunchShape&, const EnsembleBuffers& b) override {
     if (!frequencies_kernel_) throw DeviceError(info_.id, "", 0, "launch before compile");
     select();
     unsigned long long chunk_first = r.first, chunk_end = r.first + r.count;
     void* buffers[AW_BUF_COUNT];
     void* args[2 + AW_BUF_COUNT] = {&chunk_first, &chunk_end};
     buffer_args(b, buffers, args + 2);
+    // a warp per trajectory (kernels_cu/ensemble.cu: blocks of kFreqBlock threads)
+    const std::uint64_t groups = (r.count * AW_NAFF_TEAM + kFreqBlock - 1) / kFreqBlock;
+    if (groups > static_cast<std::uint64_t>(INT_MAX))
+      throw DeviceError(info_.id, "", 0, "chunk too large for one launch; set ensemble.chunk smaller");
     cuda_check(cudaLaunchKernel(reinterpret_cast<const void*>(frequencies_kernel_),
-                                dim3(static_cast<unsigned>(s.groups)), dim3(block_), args, 0, stream_.get()),
+                                dim3(static_cast<unsigned>(groups)), dim3(kFreqBlock), args, 0, stream_.get()),
                info_.id, "cudaLaunchKernel",
                "aw_frequencies over trajectories [" + std::to_string(r.first) + ", " +
                    std::to_string(r.first + r.count) + ")");

@@ -103,8 +103,15 @@ class OpenclDevice final : public ComputeDevice {
     if (const char* env = std::getenv("ARNOLDWEB_OPENCL_LANES")) lanes_ = std::atoi(env);
     if (lanes_ != 1 && lanes_ != 2 && lanes_ != 4 && lanes_ != 8 && lanes_ != 16)
       throw DeviceError(info_.id, "", 0, "ARNOLDWEB_OPENCL_LANES must be 1, 2, 4, 8 or 16");
+    // the frequency analysis: a work-group per trajectory on GPUs (aw_naff.h, "teams"); the same bits either way
+    teams_ = !info_.is_cpu;
+    if (const char* env = std::getenv("ARNOLDWEB_OPENCL_TEAMS")) teams_ = std::string(env) == "1";
+    if (teams_ && lanes_ != 1)
+      throw DeviceError(info_.id, "", 0,
+                        "ARNOLDWEB_OPENCL_TEAMS=1 (a work-group per trajectory's analysis) needs one lane: "
+                        "ARNOLDWEB_OPENCL_LANES=1");
     real_size_ = fl ? sizeof(float) : sizeof(double);
-    options_ = config.defines() + " -DAW_LANES=" + std::to_string(lanes_);
+    options_ = config.defines() + " -DAW_LANES=" + std::to_string(lanes_) + (teams_ ? " -DAW_NAFF_TEAM_PARALLEL=1" : "");
     frequencies_ = (config.features & AW_F_FREQUENCIES) != 0;
     source_ = ensemble_source(config);
     if (fl && (device_.get_info<cl_device_fp_config>(CL_DEVICE_SINGLE_FP_CONFIG) & CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT))
@@ -179,7 +186,12 @@ class OpenclDevice final : public ComputeDevice {
     try {
       compute::kernel& k = frequencies_kernel_;
       set_range_and_buffers(k, r, b, 2);
-      queue_.enqueue_1d_range_kernel(k, 0, s.items, wg_);
+      if (teams_) {
+        // the team's scratch (kernels_cl/ensemble.cl)
+        k.set_arg(2 + AW_BUF_COUNT, 6 * AW_NAFF_TEAM * real_size_, nullptr);
+        queue_.enqueue_1d_range_kernel(k, 0, r.count * AW_NAFF_TEAM, AW_NAFF_TEAM);
+      } else
+        queue_.enqueue_1d_range_kernel(k, 0, s.items, wg_);
     } catch (const compute::opencl_error& e) {
       rethrow(info_, "clEnqueueNDRangeKernel", e);
     }
@@ -265,6 +277,7 @@ class OpenclDevice final : public ComputeDevice {
   std::string source_;  // the program text (ensemble.cl flattened, with an expression model's header)
   std::size_t real_size_ = 8;
   int lanes_ = 1;
+  bool teams_ = false;  // the frequency analysis by teams of work-items (ARNOLDWEB_OPENCL_TEAMS)
   std::size_t wg_ = 1;
 };
 

@@ -1,0 +1,51 @@
+// The team form of the refinement (aw_naff.h, "teams") with eight lanes of
+// GCC vectors, as the cpu backend compiles the core (eight members at a time),
+// gives the bits of the one-lane form (a GPU's work-item per member): lengths
+// that fill whole teams and lengths padded to them, a signal with a NaN.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+
+#include "aw_cpp_std.h"
+#include "naff_team_signals.hpp"
+
+#define AW_LANES 8
+namespace naff_team8 {
+#include "aw_naff.h"
+}  // namespace naff_team8
+
+TEST_SUITE("frequencies") {
+  TEST_CASE("team: eight members at a time in a vector give the bits of one member at a time") {
+    using namespace naff_team8;
+    const auto window = [](int k, int nn, int pp) { return aw_naff_window_at(k, nn, pp); };
+    std::mt19937_64 rng(2026);
+    for (int n : {16, 64, 300, 512, 1000}) {
+      for (int p : {1, 2}) {
+        CAPTURE(n);
+        CAPTURE(p);
+        for (int trial = 0; trial < 8; ++trial) {
+          CAPTURE(trial);
+          naff_team_test::Signal s =
+              naff_team_test::make_signal(rng, n, AW_NAFF_PADDED(n), p, window);
+          if (trial == 3) s.z[2 * static_cast<std::size_t>(n / 2)] = NAN;
+          const aw_naff_team team = {0, nullptr};
+          double f8 = -7, f1 = -8;
+          int ok8 = -7, ok1 = -8;
+          aw_naff_refine_team(s.z.data(), 2 * AW_NAFF_GROUP, n, s.start, team, &f8, &ok8);
+          naff_team_test::refine_one_lane(s.z.data(), n, s.start, &f1, &ok1);
+          CHECK(ok8 == ok1);
+          CHECK(std::memcmp(&f8, &f1, sizeof(double)) == 0);
+          if (trial == 3) {
+            CHECK(ok8 == 0);  // not finite: no maximum, the start returned
+            CHECK(f8 == s.start);
+          } else {
+            CHECK(ok8 == 1);
+            CHECK(std::fabs(f8 - s.sigma) < 0.5 / n);
+          }
+        }
+      }
+    }
+  }
+}
