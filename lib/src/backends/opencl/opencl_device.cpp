@@ -177,6 +177,7 @@ class OpenclDevice final : public ComputeDevice {
       set_range_and_buffers(k, r, b, 4);
       k.set_arg(4 + AW_BUF_COUNT, 2 * wg_ * real_size_, nullptr);
       queue_.enqueue_1d_range_kernel(k, 0, s.items, wg_);
+      queue_.flush();  // the device starts while the host prepares for the results (EnsembleBackend::run_chunk)
     } catch (const compute::opencl_error& e) {
       rethrow(info_, "clEnqueueNDRangeKernel", e);
     }
