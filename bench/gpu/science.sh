@@ -72,6 +72,23 @@ if [ -n "${AW_FREQ_VARIANTS:-}" ]; then
     done
   done
 fi
+# the same frequency run on NVIDIA's OpenCL (its launches keep the series below 2^31 bytes:
+# lib/src/plan/estimates.cpp), when the machine has it
+CLDEV=$("$AW" devices --json | python3 -c "import json,sys; print(next((d['id'] for d in json.load(sys.stdin) if d['id'].startswith('opencl') and not d['cpu']), ''))")
+if [ -n "$CLDEV" ]; then
+  DEV0=$DEV DEV=$CLDEV
+  run warm_opencl "$tmp/w6" "$scene" --set ensemble.trajectories=65536 --set output.images=false "${freq[@]}" >/dev/null
+  run warm_opencl_map "$tmp/w7" "$scene" --set ensemble.trajectories=65536 --set output.images=false >/dev/null
+  run opencl_map "$tmp/o1" "$scene" --set output.images=false
+  run opencl_map_freq "$tmp/o2" "$scene" --set output.images=false "${freq[@]}"
+  DEV=$DEV0
+fi
+# AW_FREQ_NCU=1: ncu of one launch of 65,536 of the frequency run (time and DRAM bytes per kernel)
+if [ -n "${AW_FREQ_NCU:-}" ] && command -v ncu >/dev/null; then
+  ncu --kernel-name regex:aw_ --launch-count 3 --metrics gpu__time_duration.sum,dram__bytes_read.sum,dram__bytes_write.sum,dram__throughput.avg.pct_of_peak_sustained_elapsed \
+    "$AW" run "$scene" --quiet --device "$DEV" --out "$tmp/n1" --force --set output.images=false \
+    --set ensemble.trajectories=65536 --set ensemble.chunk=65536 "${freq[@]}" 2>&1 | grep -E "^  aw_|duration|bytes|throughput"
+fi
 # the FGL kernels compiled first too (timed cold, each FGL run counted its NVRTC compile: 0.85 s
 # for a 0.32 s FLI map on the H200)
 run warm_fgl_fli "$tmp/w4" scenes/fgl_frequency_map.toml --set observe.frequencies=false --set output.images=false \
