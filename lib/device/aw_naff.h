@@ -378,9 +378,9 @@ AW_FN void aw_naff_subtract(AW_GLOBAL real* re, AW_GLOBAL real* im, aw_u64 strid
  * groups of G = AW_NAFF_GROUP: samples G q .. G q + G - 1 as 2 G reals (re,
  * im, re, im, ..) at z + q gs (gs = 2 G where the groups follow each other;
  * the series buffer interleaves the groups of a block of trajectories:
- * effects/aw_fx_frequencies.h), already
- * multiplied by the window chi_p (aw_naff_window_at), and padded with zeros
- * to np = AW_NAFF_PADDED(n) samples. A pass is shared by a team of T = AW_NAFF_TEAM members: member t
+ * effects/aw_fx_frequencies.h), already multiplied by the window chi_p
+ * (aw_naff_window_at), and padded with zeros to np = AW_NAFF_PADDED(n)
+ * samples. A pass is shared by a team of T = AW_NAFF_TEAM members: member t
  * sums the samples k = t + T i (i = 0 .. np/T - 1) in order, its rotation
  * exp(-2 pi i sigma m_k) recomputed exactly every AW_NAFF_ANCHOR of its
  * samples and advanced by exp(-2 pi i sigma T) between them; the members'

@@ -48,7 +48,7 @@
 #define AW_FREQ_TAIL_RATE(g) (g)
 #define AW_FREQ_TAIL_FINE 6
 
-/* The block of record rec, and its place j in the block. */
+/* The first real of the block of record rec (its place in the block: rec % AW_SERIES_BLOCK). */
 AW_FN AW_GLOBAL real* aw_series_block(aw_outputs out, AW_CONSTANT aw_iparams* ip, aw_u64 rec) {
   return out.series + (rec / AW_SERIES_BLOCK) * ((aw_u64)ip->series_reals * AW_SERIES_BLOCK);
 }
