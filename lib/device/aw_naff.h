@@ -81,6 +81,29 @@ typedef struct {
   real c, s, dc, ds, a;
 } aw_naff_rotor;
 
+/* The two steps of every pass, on scalars or lanes (type T), shared by
+ * aw_naff_sums_at and aw_naff_member_sums: a rotation (c, s) advanced by
+ * (dc, ds); a term a = (ar, ai) at time m added to the sums S_0, S_1, S_2
+ * (acc[0 .. 5]: re, im of each). */
+#define AW_NAFF_ROTATE(T, c, s, dc, ds)                    \
+  do {                                                     \
+    const T rotated_c_ = AW_FMA((c), (dc), -((s) * (ds))); \
+    const T rotated_s_ = AW_FMA((s), (dc), (c) * (ds));    \
+    (c) = rotated_c_;                                      \
+    (s) = rotated_s_;                                      \
+  } while (0)
+/* (m^2 is exact while |m| < 2^26 in double, 2^12 in float: n < 8192) */
+#define AW_NAFF_ADD_TERM(T, acc, ar, ai, m)     \
+  do {                                          \
+    (acc)[0] = (acc)[0] + (ar);                 \
+    (acc)[1] = (acc)[1] + (ai);                 \
+    (acc)[2] = AW_FMA((m), (ar), (acc)[2]);     \
+    (acc)[3] = AW_FMA((m), (ai), (acc)[3]);     \
+    const T squared_m_ = (m) * (m);             \
+    (acc)[4] = AW_FMA(squared_m_, (ar), (acc)[4]); \
+    (acc)[5] = AW_FMA(squared_m_, (ai), (acc)[5]); \
+  } while (0)
+
 AW_FN void aw_naff_rotor_begin(aw_naff_rotor* r, real a) {
   r->a = a;
   aw_sincos2pi_1(a, &r->ds, &r->dc);
@@ -91,14 +114,10 @@ AW_FN void aw_naff_rotor_begin(aw_naff_rotor* r, real a) {
 /* The rotation at sample k, m = m_k: exact at the anchors, one complex
  * product from the previous sample between them. */
 AW_FN void aw_naff_rotor_at(aw_naff_rotor* r, int k, real m) {
-  if (k % AW_NAFF_ANCHOR == 0) {
+  if (k % AW_NAFF_ANCHOR == 0)
     aw_sincos2pi_1(r->a * m, &r->s, &r->c);
-  } else {
-    const real c = AW_FMA(r->c, r->dc, -(r->s * r->ds));
-    const real s = AW_FMA(r->s, r->dc, r->c * r->ds);
-    r->c = c;
-    r->s = s;
-  }
+  else
+    AW_NAFF_ROTATE(real, r->c, r->s, r->dc, r->ds);
 }
 
 /* chi_p from cos(2 pi m_k / (n - 1)): (1 + cos)^p. */
@@ -109,6 +128,17 @@ AW_FN real aw_naff_window(real cosine, int p) {
   return w;
 }
 
+/* The sums from S_0, S_1, S_2 (re, im: v[0 .. 5]) and the window's weights. */
+AW_FN void aw_naff_sums_set(aw_naff_sums* out, const real* v, real wsum) {
+  out->s0r = v[0];
+  out->s0i = v[1];
+  out->s1r = v[2];
+  out->s1i = v[3];
+  out->s2r = v[4];
+  out->s2i = v[5];
+  out->wsum = wsum;
+}
+
 /* One pass: the sums at sigma. n >= 3. */
 AW_FN void aw_naff_sums_at(AW_GLOBAL const real* re, AW_GLOBAL const real* im, aw_u64 stride, int n, int p,
                            real sigma, aw_naff_sums* out) {
@@ -116,7 +146,7 @@ AW_FN void aw_naff_sums_at(AW_GLOBAL const real* re, AW_GLOBAL const real* im, a
   aw_naff_rotor e, win;
   aw_naff_rotor_begin(&e, -sigma);
   aw_naff_rotor_begin(&win, AW_R(1.0) / (real)(n - 1));
-  real s0r = AW_R(0.0), s0i = AW_R(0.0), s1r = AW_R(0.0), s1i = AW_R(0.0), s2r = AW_R(0.0), s2i = AW_R(0.0);
+  real acc[6] = {AW_R(0.0), AW_R(0.0), AW_R(0.0), AW_R(0.0), AW_R(0.0), AW_R(0.0)};
   real wsum = AW_R(0.0);
   for (int k = 0; k < n; ++k) {
     const real m = (real)k - centre; /* exact: a half-integer or an integer */
@@ -127,22 +157,10 @@ AW_FN void aw_naff_sums_at(AW_GLOBAL const real* re, AW_GLOBAL const real* im, a
     /* a = w z exp(-2 pi i sigma m) */
     const real ar = w * AW_FMA(zr, e.c, -(zi * e.s));
     const real ai = w * AW_FMA(zr, e.s, zi * e.c);
-    s0r = s0r + ar;
-    s0i = s0i + ai;
-    s1r = AW_FMA(m, ar, s1r);
-    s1i = AW_FMA(m, ai, s1i);
-    const real mm = m * m; /* exact while |m| < 2^26 (double), 2^12 (float: n < 8192) */
-    s2r = AW_FMA(mm, ar, s2r);
-    s2i = AW_FMA(mm, ai, s2i);
+    AW_NAFF_ADD_TERM(real, acc, ar, ai, m);
     wsum = wsum + w;
   }
-  out->s0r = s0r;
-  out->s0i = s0i;
-  out->s1r = s1r;
-  out->s1i = s1i;
-  out->s2r = s2r;
-  out->s2i = s2i;
-  out->wsum = wsum;
+  aw_naff_sums_set(out, acc, wsum);
 }
 
 /* Im(conj(S_0) S_1): the sign of d|phi|^2 / dsigma. */
@@ -426,7 +444,7 @@ AW_FN void aw_naff_member_sums(AW_GLOBAL const real* z, aw_u64 gs, int n, int t0
   aw_sincos2pi_1(-sigma * (real)AW_NAFF_TEAM, &ds1, &dc1);
   const lreal dc = AW_LSPLAT(dc1), ds = AW_LSPLAT(ds1);
   lreal ec = AW_LSPLAT(AW_R(1.0)), es = AW_LSPLAT(AW_R(0.0));
-  lreal s0r = es, s0i = es, s1r = es, s1i = es, s2r = es, s2i = es;
+  lreal acc[6] = {es, es, es, es, es, es};
   for (int i0 = 0; i0 < chain; i0 += AW_NAFF_BATCH) {
     lreal zr[AW_NAFF_BATCH], zi[AW_NAFF_BATCH];
     for (int b = 0; b < AW_NAFF_BATCH; ++b) {
@@ -450,31 +468,16 @@ AW_FN void aw_naff_member_sums(AW_GLOBAL const real* z, aw_u64 gs, int n, int t0
     for (int b = 0; b < AW_NAFF_BATCH && i0 + b < chain; ++b) {
       const int i = i0 + b;
       const lreal m = m0 + AW_LSPLAT((real)(AW_NAFF_TEAM * i)); /* exact */
-      if (i % AW_NAFF_ANCHOR == 0) {
+      if (i % AW_NAFF_ANCHOR == 0)
         aw_sincos2pi(a * m, &es, &ec);
-      } else {
-        const lreal c = AW_FMA(ec, dc, -(es * ds));
-        const lreal sn = AW_FMA(es, dc, ec * ds);
-        ec = c;
-        es = sn;
-      }
+      else
+        AW_NAFF_ROTATE(lreal, ec, es, dc, ds);
       const lreal ar = AW_FMA(zr[b], ec, -(zi[b] * es));
       const lreal ai = AW_FMA(zr[b], es, zi[b] * ec);
-      s0r = s0r + ar;
-      s0i = s0i + ai;
-      s1r = AW_FMA(m, ar, s1r);
-      s1i = AW_FMA(m, ai, s1i);
-      const lreal mm = m * m; /* exact while |m| < 2^26 (double), 2^12 (float: n < 8192) */
-      s2r = AW_FMA(mm, ar, s2r);
-      s2i = AW_FMA(mm, ai, s2i);
+      AW_NAFF_ADD_TERM(lreal, acc, ar, ai, m);
     }
   }
-  v[0] = s0r;
-  v[1] = s0i;
-  v[2] = s1r;
-  v[3] = s1i;
-  v[4] = s2r;
-  v[5] = s2i;
+  for (int q = 0; q < 6; ++q) v[q] = acc[q];
 }
 
 /* Who computes a pass: on a GPU (AW_NAFF_TEAM_PARALLEL, one lane) this
@@ -532,13 +535,7 @@ AW_FN void aw_naff_team_sums(AW_GLOBAL const real* z, aw_u64 gs, int n, real sig
   }
   for (int q = 0; q < 6; ++q) v[q] = aw_naff_tree(p[q]);
 #endif
-  s->s0r = v[0];
-  s->s0i = v[1];
-  s->s1r = v[2];
-  s->s1i = v[3];
-  s->s2r = v[4];
-  s->s2i = v[5];
-  s->wsum = AW_R(1.0);
+  aw_naff_sums_set(s, v, AW_R(1.0));
 }
 
 /* aw_naff_refine's search from sigma0 with the team's passes: *freq its

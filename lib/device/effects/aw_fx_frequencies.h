@@ -67,23 +67,14 @@ AW_FN AW_GLOBAL real* aw_series_tail(aw_outputs out, AW_CONSTANT aw_iparams* ip,
   return aw_series_block(out, ip, rec) + (12 * np + (aw_u64)e) * AW_SERIES_BLOCK + rec % AW_SERIES_BLOCK;
 }
 
-/* Element e of the tails of the lanes' records (first, first + 1, ...),
- * stored from and loaded into a vector. */
-AW_FN void aw_series_store(aw_outputs out, AW_CONSTANT aw_iparams* ip, aw_u64 first, int e, lreal v) {
-  real x[AW_LANES];
-  AW_STORE_LANES(v, x);
-  for (int j = 0; j < AW_LANES; ++j) *aw_series_tail(out, ip, first + (aw_u64)j, e) = x[j];
-}
-AW_FN lreal aw_series_load(aw_outputs out, AW_CONSTANT aw_iparams* ip, aw_u64 first, int e) {
-  real x[AW_LANES];
-  for (int j = 0; j < AW_LANES; ++j) x[j] = *aw_series_tail(out, ip, first + (aw_u64)j, e);
-  return AW_LOAD_LANES(x);
-}
+/* A group of lanes never crosses a block: the lanes' tail elements e are
+ * consecutive (one vector load or store at aw_series_tail of the first). */
+typedef char aw_lanes_divide_series_block[(AW_SERIES_BLOCK % AW_LANES == 0) ? 1 : -1];
 
 /* Sample k (0 .. 2n - 1) of the lanes' angles, multiplied by the window; at
- * the end of a window the mean rates and the padding, at the end of the
- * second whether each lane is fine. Every lane, active or not: the buffer
- * holds whole blocks. Nothing is kept in registers between samples (the
+ * the end of a window the mean rates, at the end of the second whether each
+ * lane is fine. The padding past n stays as the buffer was made: zero. Every
+ * lane, active or not: the buffer holds whole blocks. Nothing is kept in registers between samples (the
  * unwrapped angles at a window's first sample wait in the rates' places):
  * the integration between samples has every register it had without
  * frequencies. */
@@ -97,7 +88,8 @@ AW_FN void aw_freq_sample(const aw_lstate* s, const int* status, aw_i64 k, aw_la
                               AW_INT_TO_LANE(s->wz) + s->uz};
   const lreal u[3] = {s->ux, s->uy, s->uz};
   if (m == 0)
-    for (int d = 0; d < 3; ++d) aw_series_store(out, ip, first, AW_FREQ_TAIL_RATE(window * 3 + d), unwrapped[d]);
+    for (int d = 0; d < 3; ++d)
+      AW_STORE_LANES(unwrapped[d], aw_series_tail(out, ip, first, AW_FREQ_TAIL_RATE(window * 3 + d)));
   const real w = aw_naff_window_at(m, n, (int)ip->frequency_order);
   for (int d = 0; d < 3; ++d) {
     lreal sn, cs;
@@ -114,14 +106,9 @@ AW_FN void aw_freq_sample(const aw_lstate* s, const int* status, aw_i64 k, aw_la
   }
   if (m != n - 1) return;
   for (int d = 0; d < 3; ++d) {
-    const int e = AW_FREQ_TAIL_RATE(window * 3 + d);
-    aw_series_store(out, ip, first, e, (unwrapped[d] - aw_series_load(out, ip, first, e)) / (real)(n - 1));
-    for (int j = 0; j < AW_LANES; ++j)
-      for (int pad = n; pad < AW_NAFF_PADDED(n); ++pad) {
-        AW_GLOBAL real* at = aw_series_sample(out, ip, first + (aw_u64)j, window * 3 + d, pad);
-        at[0] = AW_R(0.0);
-        at[1] = AW_R(0.0);
-      }
+    AW_GLOBAL real* at = aw_series_tail(out, ip, first, AW_FREQ_TAIL_RATE(window * 3 + d));
+    const lreal rate = (unwrapped[d] - AW_LOAD_LANES(at)) / (real)(n - 1);
+    AW_STORE_LANES(rate, at);
   }
   if (window == 1)
     for (int j = 0; j < AW_LANES; ++j) {

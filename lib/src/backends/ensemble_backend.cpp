@@ -129,7 +129,7 @@ class EnsembleBackend final : public Backend {
     if (rec_i) b_[AW_BUF_RECORDS_I] = make(rec_i, "per-trajectory records (ensemble.chunk per launch)");
     if (series) {
       b_[AW_BUF_SERIES] = make(series, "the sampled series of the frequency analysis (ensemble.chunk per launch)");
-      dev_->zero(*b_[AW_BUF_SERIES]);  // lanes past a chunk's end are read, never used: defined all the same
+      dev_->zero(*b_[AW_BUF_SERIES]);  // the windows' padding past n samples is read as zeros (aw_fx_frequencies.h)
     }
     dev_->finish("preparing buffers");
   }
