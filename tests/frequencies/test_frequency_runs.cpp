@@ -261,6 +261,22 @@ TEST_SUITE("frequency-runs") {
     }
   }
 
+  // The GPU's team form needs one lane: asked for with more, an OpenCL device
+  // refuses to compile and names both settings.
+  TEST_CASE("ARNOLDWEB_OPENCL_TEAMS=1 with several lanes: a clear error naming ARNOLDWEB_OPENCL_LANES") {
+    const Plan plan = make_plan(fgl_scene({}));
+    for (const auto& device : awtest::devices_under_test()) {
+      if (device.backend != "opencl") continue;
+      CAPTURE(device.id);
+      ::setenv("ARNOLDWEB_OPENCL_LANES", "8", 1);
+      ::setenv("ARNOLDWEB_OPENCL_TEAMS", "1", 1);
+      CHECK_THROWS_WITH_AS(awtest::run_on(device.id, plan), doctest::Contains("ARNOLDWEB_OPENCL_LANES=1"),
+                           DeviceError);
+      ::unsetenv("ARNOLDWEB_OPENCL_LANES");
+      ::unsetenv("ARNOLDWEB_OPENCL_TEAMS");
+    }
+  }
+
   TEST_CASE("frequencies: the plan's checks name the key and the bound") {
     CHECK_THROWS_WITH_AS(make_plan(fgl_scene({"run.duration=20", "run.average=20"})),
                          doctest::Contains("observe.frequencies"), SceneError);
