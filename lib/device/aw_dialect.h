@@ -349,4 +349,27 @@ AW_FN aw_i64 aw_divrem(aw_i64 a, aw_i64 b, aw_i64* r) {
   return q;
 }
 
+/* (q, r) = (k / d, k % d) for a k that goes up one at a time (the segments of
+ * a run), kept without a division per step: a 64-bit division is a software
+ * routine of tens of instructions on a GPU, and the segment loop comes round
+ * every few steps when frequencies are sampled. */
+typedef struct {
+  aw_i64 q, r;
+} aw_count;
+
+AW_FN aw_count aw_count_at(aw_i64 k, aw_i64 d) {
+  aw_count c;
+  c.q = aw_divrem(k, d, &c.r);
+  return c;
+}
+
+/* k -> k + 1 */
+AW_FN void aw_count_next(aw_count* c, aw_i64 d) {
+  c->r = c->r + 1;
+  if (c->r == d) {
+    c->r = 0;
+    c->q = c->q + 1;
+  }
+}
+
 #endif /* AW_DIALECT_H */

@@ -49,17 +49,19 @@ AW_FN void aw_ensemble_item(aw_config cfg, aw_lanes l, aw_i64 seg_first, aw_i64 
     aw_carry_load(&s, &fx, &ws, out, ip, l);
   }
   aw_fx_first_force(cfg, &fx, &s, rp);
+  aw_fx_counts_begin(cfg, &fx, seg_first, ip);
 
+  aw_count at = aw_count_at(seg_first, segments); /* (window, segment g within it) of k */
   for (aw_i64 k = seg_first; k < seg_end; ++k) {
-    aw_i64 g;
-    const aw_i64 window = aw_divrem(k, segments, &g);
+    const aw_i64 window = at.q, g = at.r;
+    aw_count_next(&at, segments);
     if (g == 0) {
       ws.ux = s.ux, ws.uy = s.uy, ws.uz = s.uz;
       ws.wx = s.wx, ws.wy = s.wy, ws.wz = s.wz;
       aw_fx_window_begin(cfg, &fx);
     }
     aw_fx_segment(cfg, &fx, &s, ip->steps_per_segment, rp);
-    aw_fx_sample(cfg, &fx, &s, k, l, rp, ip, out);
+    aw_fx_sample(cfg, &fx, &s, l, rp, ip, out);
     if (g == segments - 1) {
       /* displacement over the window, in turns: exact integer part + wrapped part */
       lreal dx = AW_INT_TO_LANE(s.wx - ws.wx) + (s.ux - ws.ux);

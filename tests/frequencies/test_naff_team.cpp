@@ -1,12 +1,14 @@
 // The team form of the refinement (aw_naff.h, "teams") with eight lanes of
 // GCC vectors, as the cpu backend compiles the core (eight members at a time),
 // gives the bits of the one-lane form (a GPU's work-item per member): lengths
-// that fill whole teams and lengths padded to them, a signal with a NaN.
+// that fill whole teams and lengths padded to them, a signal with a NaN; the
+// padding, whatever the buffer held there, cleared by aw_naff_clear_padding.
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <vector>
 
 #include "aw_cpp_std.h"
 #include "naff_team_signals.hpp"
@@ -46,6 +48,29 @@ TEST_SUITE("frequencies") {
           }
         }
       }
+    }
+  }
+
+  TEST_CASE("team: the padding past n is cleared before the passes, whatever the buffer held there") {
+    using namespace naff_team8;
+    const auto window = [](int k, int nn, int pp) { return aw_naff_window_at(k, nn, pp); };
+    std::mt19937_64 rng(7);
+    for (int n : {16, 100, 300, 512, 1000}) {
+      CAPTURE(n);
+      const int padded = AW_NAFF_PADDED(n);
+      const naff_team_test::Signal s = naff_team_test::make_signal(rng, n, padded, 1, window);
+      std::vector<double> dirty = s.z;
+      for (std::size_t i = 2 * static_cast<std::size_t>(n); i < dirty.size(); ++i) dirty[i] = NAN;
+      const aw_naff_team team = {0, nullptr};
+      aw_naff_clear_padding(dirty.data(), 2 * AW_NAFF_GROUP, n, team);
+      CHECK(std::memcmp(dirty.data(), s.z.data(), dirty.size() * sizeof(double)) == 0);  // the samples kept, the padding 0
+      double f_dirty = -7, f_clean = -8;
+      int ok_dirty = -7, ok_clean = -8;
+      aw_naff_refine_team(dirty.data(), 2 * AW_NAFF_GROUP, n, s.start, team, &f_dirty, &ok_dirty);
+      aw_naff_refine_team(s.z.data(), 2 * AW_NAFF_GROUP, n, s.start, team, &f_clean, &ok_clean);
+      CHECK(ok_dirty == 1);
+      CHECK(ok_clean == 1);
+      CHECK(std::memcmp(&f_dirty, &f_clean, sizeof(double)) == 0);
     }
   }
 }

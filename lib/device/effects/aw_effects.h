@@ -30,6 +30,9 @@ typedef struct {
   lreal inside;         /* confine: 0 once a lane has left the region */
   aw_tangent tangent;   /* indicators: the tangent vector and its observers */
   lreal asum[3];        /* diffusion with averaging: the sum of the actions so far towards the next sample */
+  /* (k + 1) / stride and its remainder after segment k, for the energy, the
+   * frequency and the action samples (aw_count: no division per segment) */
+  aw_count energy_at, frequency_at, actions_at;
 } aw_fx;
 
 AW_FN void aw_fx_begin(aw_config cfg, aw_fx* fx, aw_lstate* s, lreal accepted, aw_lanes l,
@@ -69,20 +72,33 @@ AW_FN void aw_fx_segment(aw_config cfg, aw_fx* fx, aw_lstate* s, aw_i64 nsteps, 
     aw_segment(s, nsteps, rp, cfg.stages, cfg.kick_first, cfg.gradient);
 }
 
+/* The sample counts at the first segment of a launch, seg_first. */
+AW_FN void aw_fx_counts_begin(aw_config cfg, aw_fx* fx, aw_i64 seg_first, AW_CONSTANT aw_iparams* ip) {
+  if (AW_HAS(AW_F_ENERGY)) fx->energy_at = aw_count_at(seg_first, ip->energy_stride);
+  if (AW_HAS(AW_F_FREQUENCIES)) fx->frequency_at = aw_count_at(seg_first, ip->frequency_stride);
+  if (AW_HAS(AW_F_DIFFUSION)) fx->actions_at = aw_count_at(seg_first, ip->diffusion_stride);
+}
+
 AW_FN void aw_fx_window_begin(aw_config cfg, aw_fx* fx) { fx->over = AW_LSPLAT(AW_R(0.0)); }
 
-/* After segment k (0-based, over the whole schedule). */
-AW_FN void aw_fx_sample(aw_config cfg, aw_fx* fx, const aw_lstate* s, aw_i64 k, aw_lanes l, AW_CONSTANT aw_rparams* rp,
+/* After every segment (the counts begun by aw_fx_counts_begin say which
+ * samples are due). */
+AW_FN void aw_fx_sample(aw_config cfg, aw_fx* fx, const aw_lstate* s, aw_lanes l, AW_CONSTANT aw_rparams* rp,
                         AW_CONSTANT aw_iparams* ip, aw_outputs out) {
-  if (AW_HAS(AW_F_ENERGY) && (k + 1) % ip->energy_stride == 0)
-    aw_energy_sample(s, rp, fx->e0, &fx->emax, &fx->over, AW_HAS(AW_F_ENERGY_LIMIT));
-  if (AW_HAS(AW_F_CONFINE)) fx->inside = fx->inside * aw_in_region(&rp->confine, s->px, s->py, s->pz);
-  aw_i64 r;
-  if (AW_HAS(AW_F_FREQUENCIES)) {
-    const aw_i64 q = aw_divrem(k + 1, ip->frequency_stride, &r) - 1;
-    if (r == 0 && q < 2 * ip->frequency_samples) aw_freq_sample(s, fx->status, q, l, ip, out);
+  if (AW_HAS(AW_F_ENERGY)) {
+    aw_count_next(&fx->energy_at, ip->energy_stride);
+    if (fx->energy_at.r == 0) aw_energy_sample(s, rp, fx->e0, &fx->emax, &fx->over, AW_HAS(AW_F_ENERGY_LIMIT));
   }
-  if (AW_HAS(AW_F_DIFFUSION)) aw_actions_sample(fx->asum, s, k, l, rp, ip, out);
+  if (AW_HAS(AW_F_CONFINE)) fx->inside = fx->inside * aw_in_region(&rp->confine, s->px, s->py, s->pz);
+  if (AW_HAS(AW_F_FREQUENCIES)) {
+    aw_count_next(&fx->frequency_at, ip->frequency_stride);
+    const aw_i64 q = fx->frequency_at.q - 1;
+    if (fx->frequency_at.r == 0 && q < 2 * ip->frequency_samples) aw_freq_sample(s, fx->status, (int)q, l, ip, out);
+  }
+  if (AW_HAS(AW_F_DIFFUSION)) {
+    aw_count_next(&fx->actions_at, ip->diffusion_stride);
+    aw_actions_sample(fx->asum, s, fx->actions_at, l, rp, ip, out);
+  }
 }
 
 /* The end of window w: (dx, dy, dz) the displacement over it in turns, sane

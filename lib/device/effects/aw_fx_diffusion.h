@@ -33,13 +33,13 @@ AW_FN void aw_actions_store(lreal x, lreal y, lreal z, aw_i64 q, aw_lanes l, AW_
   }
 }
 
-/* After segment k (0-based): the sample due at its end, or (averaging) the
+/* After segment k (0-based; at = (k + 1) / D and its remainder r, D =
+ * ip->diffusion_stride): the sample due at its end, or (averaging) the
  * actions added to the running sum `asum` when its end is one of the next
  * sample's points, and the mean stored at the sample. */
-AW_FN void aw_actions_sample(lreal* asum, const aw_lstate* s, aw_i64 k, aw_lanes l, AW_CONSTANT aw_rparams* rp,
+AW_FN void aw_actions_sample(lreal* asum, const aw_lstate* s, aw_count at, aw_lanes l, AW_CONSTANT aw_rparams* rp,
                              AW_CONSTANT aw_iparams* ip, aw_outputs out) {
-  aw_i64 r;
-  const aw_i64 q = aw_divrem(k + 1, ip->diffusion_stride, &r);
+  const aw_i64 q = at.q, r = at.r;
   if (ip->diffusion_average_points == 0) {
     if (r == 0 && q <= ip->diffusion_samples) aw_actions_store(s->px, s->py, s->pz, q, l, ip, out);
     return;

@@ -13,9 +13,10 @@
  * (ip->series_reals reals each):
  *   samples     the samples of signal g = 3 w + d (window w, angle d) in
  *               groups q = m / G of G = AW_NAFF_GROUP (m = 0 .. np - 1;
- *               np = AW_NAFF_PADDED(n), zero past n), each group of
- *               trajectory j of the block 2 G reals (re, im of its samples in
- *               turn), multiplied by the window chi_p, at
+ *               np = AW_NAFF_PADDED(n), the padding past n made zero by the
+ *               analysis), each group of trajectory j of the block 2 G reals
+ *               (re, im of its samples in turn), multiplied by the window
+ *               chi_p, at
  *               ((g np/G + q) 32 + j) 2 G;
  *   tail        element e of trajectory j at (12 np + e) 32 + j: e = g the
  *               mean rate of signal g over its window (cycles per sample,
@@ -73,17 +74,20 @@ typedef char aw_lanes_divide_series_block[(AW_SERIES_BLOCK % AW_LANES == 0) ? 1 
 
 /* Sample k (0 .. 2n - 1) of the lanes' angles, multiplied by the window; at
  * the end of a window the mean rates, at the end of the second whether each
- * lane is fine. The padding past n stays as the buffer was made: zero. Every
- * lane, active or not: the buffer holds whole blocks. Nothing is kept in registers between samples (the
- * unwrapped angles at a window's first sample wait in the rates' places):
- * the integration between samples has every register it had without
- * frequencies. */
-AW_FN void aw_freq_sample(const aw_lstate* s, const int* status, aw_i64 k, aw_lanes l, AW_CONSTANT aw_iparams* ip,
+ * lane is fine. The padding past n is left alone (the analysis clears it:
+ * aw_naff_clear_padding). Every lane, active or not: the buffer holds whole
+ * blocks. Nothing is kept in registers between samples (the unwrapped angles
+ * at a window's first sample wait in the rates' places): the integration
+ * between samples has every register it had without frequencies. */
+AW_FN void aw_freq_sample(const aw_lstate* s, const int* status, int k, aw_lanes l, AW_CONSTANT aw_iparams* ip,
                           aw_outputs out) {
   const int n = (int)ip->frequency_samples;
-  const int m = (int)(k % n);
+  const int window = (k >= n) ? 1 : 0;
+  const int m = k - window * n;
   const aw_u64 first = AW_LANE_RECORD(l, 0); /* the lanes' records are consecutive */
-  const int window = (int)(k / n);
+  /* lane j's sample of angle d: at + d signal + j 2G (the lanes side by side in one block) */
+  AW_GLOBAL real* at = aw_series_sample(out, ip, first, window * 3, m);
+  const aw_u64 signal = (aw_u64)(AW_NAFF_PADDED(n) / AW_NAFF_GROUP) * AW_FREQ_GROUP_STRIDE;
   const lreal unwrapped[3] = {AW_INT_TO_LANE(s->wx) + s->ux, AW_INT_TO_LANE(s->wy) + s->uy,
                               AW_INT_TO_LANE(s->wz) + s->uz};
   const lreal u[3] = {s->ux, s->uy, s->uz};
@@ -99,16 +103,15 @@ AW_FN void aw_freq_sample(const aw_lstate* s, const int* status, aw_i64 k, aw_la
     AW_STORE_LANES(wr, re);
     AW_STORE_LANES(wi, im);
     for (int j = 0; j < AW_LANES; ++j) {
-      AW_GLOBAL real* at = aw_series_sample(out, ip, first + (aw_u64)j, window * 3 + d, m);
-      at[0] = re[j];
-      at[1] = im[j];
+      at[(aw_u64)d * signal + (aw_u64)(2 * AW_NAFF_GROUP * j)] = re[j];
+      at[(aw_u64)d * signal + (aw_u64)(2 * AW_NAFF_GROUP * j) + 1] = im[j];
     }
   }
   if (m != n - 1) return;
   for (int d = 0; d < 3; ++d) {
-    AW_GLOBAL real* at = aw_series_tail(out, ip, first, AW_FREQ_TAIL_RATE(window * 3 + d));
-    const lreal rate = (unwrapped[d] - AW_LOAD_LANES(at)) / (real)(n - 1);
-    AW_STORE_LANES(rate, at);
+    AW_GLOBAL real* tail = aw_series_tail(out, ip, first, AW_FREQ_TAIL_RATE(window * 3 + d));
+    const lreal rate = (unwrapped[d] - AW_LOAD_LANES(tail)) / (real)(n - 1);
+    AW_STORE_LANES(rate, tail);
   }
   if (window == 1)
     for (int j = 0; j < AW_LANES; ++j) {
@@ -127,8 +130,9 @@ AW_FN real aw_freq_signal(AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip
   const real whole = AW_RINT_SMALL(rate);
   real f;
   int ok;
-  aw_naff_refine_team(aw_series_sample(out, ip, rec, g, 0), AW_FREQ_GROUP_STRIDE, (int)ip->frequency_samples,
-                      rate - whole, team, &f, &ok);
+  AW_GLOBAL real* z = aw_series_sample(out, ip, rec, g, 0);
+  aw_naff_clear_padding(z, AW_FREQ_GROUP_STRIDE, (int)ip->frequency_samples, team);
+  aw_naff_refine_team(z, AW_FREQ_GROUP_STRIDE, (int)ip->frequency_samples, rate - whole, team, &f, &ok);
   return ok ? (f + whole) / rp->frequency_every : aw_nan_real();
 }
 

@@ -128,8 +128,8 @@ class EnsembleBackend final : public Backend {
     if (rec_r) b_[AW_BUF_RECORDS_R] = make(rec_r, "per-trajectory records (ensemble.chunk per launch)");
     if (rec_i) b_[AW_BUF_RECORDS_I] = make(rec_i, "per-trajectory records (ensemble.chunk per launch)");
     if (series) {
+      // not cleared: the analysis clears the windows' padding itself (aw_naff_clear_padding)
       b_[AW_BUF_SERIES] = make(series, "the sampled series of the frequency analysis (ensemble.chunk per launch)");
-      dev_->zero(*b_[AW_BUF_SERIES]);  // the windows' padding past n samples is read as zeros (aw_fx_frequencies.h)
     }
     dev_->finish("preparing buffers");
   }
