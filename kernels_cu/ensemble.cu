@@ -9,6 +9,17 @@
 #ifndef AW_NAFF_BATCH
 #define AW_NAFF_BATCH 4 /* samples loaded ahead by a member (aw_naff.h): 4 fit aw_frequencies' registers */
 #endif
+#include "aw_dialect.h" /* real */
+#include "aw_params.h" /* AW_F_* */
+#if AW_FEATURES & AW_F_FREQUENCIES
+/* The window's weights chi_p(m) of windows up to this many samples, made by
+ * each block once (aw_freq_window_fill) for its samplers: one function
+ * computes them, at the same m, as the sampler would (aw_freq_sample), so the
+ * bits are the same; a sample reads its weight instead of a division, a sine
+ * and a cosine. */
+#define AW_FREQ_WINDOW_TABLE 1024
+__shared__ real aw_freq_window_table[AW_FREQ_WINDOW_TABLE];
+#endif
 #include "aw_ensemble.h"
 #include "aw_reduce.h"
 
@@ -37,6 +48,10 @@ extern "C" __global__ void __launch_bounds__(AW_CUDA_MAX_BLOCK, AW_CUDA_MIN_BLOC
   const aw_config cfg = {AW_FEATURES, AW_STAGES, AW_KICK_FIRST, AW_INITIAL, AW_GRADIENT};
   aw_lanes l = {chunk_first + ((aw_u64)blockIdx.x * blockDim.x + threadIdx.x), chunk_end, chunk_first};
   real emax = 0, esum = 0;
+#if AW_FEATURES & AW_F_FREQUENCIES
+  aw_freq_window_fill(ip, (int)threadIdx.x, (int)blockDim.x);
+  __syncthreads();
+#endif
   if (l.first < chunk_end) {
     aw_outputs out = {hist, counters, rec_r, rec_i, series};
     aw_ensemble_item(cfg, l, seg_first, seg_end, rp, ip, out, &emax, &esum);

@@ -72,6 +72,16 @@ AW_FN AW_GLOBAL real* aw_series_tail(aw_outputs out, AW_CONSTANT aw_iparams* ip,
  * consecutive (one vector load or store at aw_series_tail of the first). */
 typedef char aw_lanes_divide_series_block[(AW_SERIES_BLOCK % AW_LANES == 0) ? 1 : -1];
 
+#ifdef AW_FREQ_WINDOW_TABLE
+/* A kernel's table of the window's weights (declared by the kernel, shared by
+ * its group): item `item` of `items` computes its share. */
+AW_FN void aw_freq_window_fill(AW_CONSTANT aw_iparams* ip, int item, int items) {
+  const int n = (int)ip->frequency_samples;
+  if (n > AW_FREQ_WINDOW_TABLE) return;
+  for (int m = item; m < n; m += items) aw_freq_window_table[m] = aw_naff_window_at(m, n, (int)ip->frequency_order);
+}
+#endif
+
 /* Sample k (0 .. 2n - 1) of the lanes' angles, multiplied by the window; at
  * the end of a window the mean rates, at the end of the second whether each
  * lane is fine. The padding past n is left alone (the analysis clears it:
@@ -94,7 +104,11 @@ AW_FN void aw_freq_sample(const aw_lstate* s, const int* status, int k, aw_lanes
   if (m == 0)
     for (int d = 0; d < 3; ++d)
       AW_STORE_LANES(unwrapped[d], aw_series_tail(out, ip, first, AW_FREQ_TAIL_RATE(window * 3 + d)));
+#ifdef AW_FREQ_WINDOW_TABLE
+  const real w = (n <= AW_FREQ_WINDOW_TABLE) ? aw_freq_window_table[m] : aw_naff_window_at(m, n, (int)ip->frequency_order);
+#else
   const real w = aw_naff_window_at(m, n, (int)ip->frequency_order);
+#endif
   for (int d = 0; d < 3; ++d) {
     lreal sn, cs;
     aw_sincos2pi(u[d], &sn, &cs);
