@@ -95,6 +95,24 @@ class CudaDevice final : public ComputeDevice {
   void download(const DeviceMemory& from, void* to, std::size_t bytes) override {
     if (bytes) cuda_check(cudaMemcpy(to, dptr(from), bytes, cudaMemcpyDeviceToHost), info_.id, "cudaMemcpy");
   }
+  // Large read-backs go into memory locked while the kernels run: a copy into
+  // pageable memory goes through the driver's staging at ~11 GB/s (84 MB of
+  // frequency records: 7.9 ms of a 0.25 s run on an H200). Where locking
+  // fails, the copy is the pageable one.
+  void download_ahead(void* to, std::size_t bytes) override {
+    if (bytes < kLockFrom || std::find(locked_.begin(), locked_.end(), to) != locked_.end()) return;
+    select();
+    if (cudaHostRegister(to, bytes, cudaHostRegisterDefault) == cudaSuccess)
+      locked_.push_back(to);
+    else
+      cudaGetLastError();
+  }
+  void download_done(void* to) override {
+    const auto at = std::find(locked_.begin(), locked_.end(), to);
+    if (at == locked_.end()) return;
+    locked_.erase(at);
+    if (cudaHostUnregister(to) != cudaSuccess) cudaGetLastError();
+  }
   void zero(DeviceMemory& m) override {
     cuda_check(cudaMemsetAsync(dptr(&m), 0, m.bytes(), stream_.get()), info_.id, "cudaMemsetAsync");
   }
@@ -249,6 +267,8 @@ class CudaDevice final : public ComputeDevice {
     return cudaSuccess;
   }
 
+  static constexpr std::size_t kLockFrom = std::size_t{4} << 20;  // bytes: smaller read-backs stay pageable
+  std::vector<void*> locked_;                                     // host memory locked by download_ahead
   int ordinal_;
   int cc_ = 0;
   DeviceInfo info_;
