@@ -349,6 +349,41 @@ AW_FN aw_i64 aw_divrem(aw_i64 a, aw_i64 b, aw_i64* r) {
   return q;
 }
 
+/* Two consecutive reals p[0], p[1] of global memory, p at an even index of
+ * an aligned buffer (a sample's re and im): one 16-byte access on a GPU (8 in
+ * float), two elsewhere. */
+#if defined(AW_CUDA) || defined(__OPENCL_VERSION__)
+#ifdef AW_FLOAT
+typedef float2 aw_real_pair;
+#else
+typedef double2 aw_real_pair;
+#endif
+#define AW_LOAD_PAIR(p, a, b)                                             \
+  do {                                                                    \
+    const aw_real_pair pair_ = *(AW_GLOBAL const aw_real_pair*)(p);       \
+    (a) = pair_.x;                                                        \
+    (b) = pair_.y;                                                        \
+  } while (0)
+#define AW_STORE_PAIR(p, a, b)                 \
+  do {                                         \
+    aw_real_pair pair_;                        \
+    pair_.x = (a);                             \
+    pair_.y = (b);                             \
+    *(AW_GLOBAL aw_real_pair*)(p) = pair_;     \
+  } while (0)
+#else
+#define AW_LOAD_PAIR(p, a, b) \
+  do {                        \
+    (a) = (p)[0];             \
+    (b) = (p)[1];             \
+  } while (0)
+#define AW_STORE_PAIR(p, a, b) \
+  do {                         \
+    (p)[0] = (a);              \
+    (p)[1] = (b);              \
+  } while (0)
+#endif
+
 /* (q, r) = (k / d, k % d) for a k that goes up one at a time (the segments of
  * a run), kept without a division per step: a 64-bit division is a software
  * routine of tens of instructions on a GPU, and the segment loop comes round

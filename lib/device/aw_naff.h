@@ -461,8 +461,7 @@ AW_FN void aw_naff_member_sums(AW_GLOBAL const real* z, aw_u64 gs, int n, int t0
       const int i = (i0 + b < chain) ? i0 + b : chain - 1; /* past the end: loaded again, not used */
       const aw_u64 offset = (aw_u64)i * along;
 #if AW_LANES == 1
-      zr[b] = z[start[0] + offset];
-      zi[b] = z[start[0] + offset + 1];
+      AW_LOAD_PAIR(z + start[0] + offset, zr[b], zi[b]);
 #else
       real r[AW_LANES], q[AW_LANES];
       for (int j = 0; j < AW_LANES; ++j) {

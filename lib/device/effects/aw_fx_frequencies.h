@@ -116,10 +116,7 @@ AW_FN void aw_freq_sample(const aw_lstate* s, const int* status, int k, aw_lanes
     const lreal wr = AW_LSPLAT(w) * cs, wi = AW_LSPLAT(w) * sn;
     AW_STORE_LANES(wr, re);
     AW_STORE_LANES(wi, im);
-    for (int j = 0; j < AW_LANES; ++j) {
-      at[(aw_u64)d * signal + (aw_u64)(2 * AW_NAFF_GROUP * j)] = re[j];
-      at[(aw_u64)d * signal + (aw_u64)(2 * AW_NAFF_GROUP * j) + 1] = im[j];
-    }
+    for (int j = 0; j < AW_LANES; ++j) AW_STORE_PAIR(at + (aw_u64)d * signal + (aw_u64)(2 * AW_NAFF_GROUP * j), re[j], im[j]);
   }
   if (m != n - 1) return;
   for (int d = 0; d < 3; ++d) {
