@@ -316,8 +316,9 @@ AW_FN int aw_naff_search_step(aw_naff_search* q, const aw_naff_sums* s, int n) {
   /* Newton converges quadratically: after a step of size s the error is about
    * s^2 / (the width of the peak, ~ a bin), so a step below
    * AW_NAFF_QUADRATIC sqrt(eps (|x| + half a bin) half a bin) leaves an error
-   * below eps (|x| + half a bin), round-off, without another pass to see it. */
-  if (newton && AW_FABS(step) <= AW_NAFF_QUADRATIC * AW_SQRT(eps * (AW_FABS(q->x) + half_bin) * half_bin)) {
+   * below eps (|x| + half a bin), round-off, without another pass to see it
+   * (compared squared: no square root in every pass). */
+  if (newton && step * step <= AW_NAFF_QUADRATIC * AW_NAFF_QUADRATIC * (eps * (AW_FABS(q->x) + half_bin) * half_bin)) {
     q->x = q->x + step;
     q->done = 1;
     return 0;
