@@ -420,6 +420,12 @@ AW_FN real aw_naff_window_at(int k, int n, int p) {
   return aw_naff_window(c, p);
 }
 
+/* Where sample k lies from the window's first real, its groups gs reals
+ * apart: group k / G, place k % G (its re; its im follows). */
+AW_FN aw_u64 aw_naff_sample_at(int k, aw_u64 gs) {
+  return (aw_u64)(k / AW_NAFF_GROUP) * gs + (aw_u64)(2 * (k % AW_NAFF_GROUP));
+}
+
 /* Add the members' values pairwise (p[0 .. T-1], overwritten): the tree. */
 AW_FN real aw_naff_tree(real* p) {
   for (int h = AW_NAFF_TEAM / 2; h >= 1; h >>= 1)
@@ -439,14 +445,15 @@ AW_FN void aw_naff_member_sums(AW_GLOBAL const real* z, aw_u64 gs, int n, int t0
   const real centre = AW_R(0.5) * (real)(n - 1);
   /* a member's samples k = t + T i lie in groups t / G + (T / G) i at place
    * t % G: from its first one to the next, `along` reals (no division per
-   * sample: the address arithmetic was half of a GPU pass) */
+   * sample: dividing each sample's index was a quarter of the GPU analysis
+   * kernel's instructions) */
   const aw_u64 along = (aw_u64)(AW_NAFF_TEAM / AW_NAFF_GROUP) * gs;
   typedef char aw_naff_group_divides_team[(AW_NAFF_TEAM % AW_NAFF_GROUP == 0) ? 1 : -1];
   real first[AW_LANES];
   aw_u64 start[AW_LANES];
   for (int j = 0; j < AW_LANES; ++j) {
     first[j] = (real)(t0 + j) - centre; /* exact: half-integers or integers */
-    start[j] = (aw_u64)((t0 + j) / AW_NAFF_GROUP) * gs + (aw_u64)(2 * ((t0 + j) % AW_NAFF_GROUP));
+    start[j] = aw_naff_sample_at(t0 + j, gs);
   }
   lreal m = AW_LOAD_LANES(first); /* the time of the member's sample i: + T per sample, exact */
   const lreal team_time = AW_LSPLAT((real)AW_NAFF_TEAM);
@@ -560,9 +567,7 @@ AW_FN void aw_naff_clear_padding(AW_GLOBAL real* z, aw_u64 gs, int n, aw_naff_te
   for (int t = t0; t < t1; ++t) {
     const int k = AW_NAFF_PADDED(n) - AW_NAFF_TEAM + t; /* the member's last sample */
     if (k < n) continue;
-    AW_GLOBAL real* at = z + (aw_u64)(k / AW_NAFF_GROUP) * gs + (aw_u64)(2 * (k % AW_NAFF_GROUP));
-    at[0] = AW_R(0.0);
-    at[1] = AW_R(0.0);
+    AW_STORE_PAIR(z + aw_naff_sample_at(k, gs), AW_R(0.0), AW_R(0.0));
   }
 }
 

@@ -54,12 +54,15 @@ AW_FN AW_GLOBAL real* aw_series_block(aw_outputs out, AW_CONSTANT aw_iparams* ip
   return out.series + (rec / AW_SERIES_BLOCK) * ((aw_u64)ip->series_reals * AW_SERIES_BLOCK);
 }
 
+/* Reals from a sample of signal g to the same sample of signal g + 1. */
+AW_FN aw_u64 aw_series_signal(AW_CONSTANT aw_iparams* ip) {
+  return (aw_u64)(AW_NAFF_PADDED((int)ip->frequency_samples) / AW_NAFF_GROUP) * AW_FREQ_GROUP_STRIDE;
+}
+
 /* Sample m (0 .. np - 1) of signal g of record rec: its re, then its im. */
 AW_FN AW_GLOBAL real* aw_series_sample(aw_outputs out, AW_CONSTANT aw_iparams* ip, aw_u64 rec, int g, int m) {
-  const aw_u64 np = (aw_u64)AW_NAFF_PADDED((int)ip->frequency_samples);
-  const aw_u64 group = (aw_u64)g * (np / AW_NAFF_GROUP) + (aw_u64)(m / AW_NAFF_GROUP);
-  return aw_series_block(out, ip, rec) + group * AW_FREQ_GROUP_STRIDE + (rec % AW_SERIES_BLOCK) * (2 * AW_NAFF_GROUP) +
-         2 * (aw_u64)(m % AW_NAFF_GROUP);
+  return aw_series_block(out, ip, rec) + (aw_u64)g * aw_series_signal(ip) +
+         (rec % AW_SERIES_BLOCK) * (2 * AW_NAFF_GROUP) + aw_naff_sample_at(m, AW_FREQ_GROUP_STRIDE);
 }
 
 /* Element e of the tail of record rec. */
@@ -82,6 +85,15 @@ AW_FN void aw_freq_window_fill(AW_CONSTANT aw_iparams* ip, int item, int items) 
 }
 #endif
 
+/* The window's weight chi_p at sample m of n: from the kernel's table where
+ * it has one (the same function made it), else computed here. */
+AW_FN real aw_freq_weight(AW_CONSTANT aw_iparams* ip, int m, int n) {
+#ifdef AW_FREQ_WINDOW_TABLE
+  if (n <= AW_FREQ_WINDOW_TABLE) return aw_freq_window_table[m];
+#endif
+  return aw_naff_window_at(m, n, (int)ip->frequency_order);
+}
+
 /* Sample k (0 .. 2n - 1) of the lanes' angles, multiplied by the window; at
  * the end of a window the mean rates, at the end of the second whether each
  * lane is fine. The padding past n is left alone (the analysis clears it:
@@ -97,18 +109,14 @@ AW_FN void aw_freq_sample(const aw_lstate* s, const int* status, int k, aw_lanes
   const aw_u64 first = AW_LANE_RECORD(l, 0); /* the lanes' records are consecutive */
   /* lane j's sample of angle d: at + d signal + j 2G (the lanes side by side in one block) */
   AW_GLOBAL real* at = aw_series_sample(out, ip, first, window * 3, m);
-  const aw_u64 signal = (aw_u64)(AW_NAFF_PADDED(n) / AW_NAFF_GROUP) * AW_FREQ_GROUP_STRIDE;
+  const aw_u64 signal = aw_series_signal(ip);
   const lreal unwrapped[3] = {AW_INT_TO_LANE(s->wx) + s->ux, AW_INT_TO_LANE(s->wy) + s->uy,
                               AW_INT_TO_LANE(s->wz) + s->uz};
   const lreal u[3] = {s->ux, s->uy, s->uz};
   if (m == 0)
     for (int d = 0; d < 3; ++d)
       AW_STORE_LANES(unwrapped[d], aw_series_tail(out, ip, first, AW_FREQ_TAIL_RATE(window * 3 + d)));
-#ifdef AW_FREQ_WINDOW_TABLE
-  const real w = (n <= AW_FREQ_WINDOW_TABLE) ? aw_freq_window_table[m] : aw_naff_window_at(m, n, (int)ip->frequency_order);
-#else
-  const real w = aw_naff_window_at(m, n, (int)ip->frequency_order);
-#endif
+  const real w = aw_freq_weight(ip, m, n);
   for (int d = 0; d < 3; ++d) {
     lreal sn, cs;
     aw_sincos2pi(u[d], &sn, &cs);
@@ -116,7 +124,8 @@ AW_FN void aw_freq_sample(const aw_lstate* s, const int* status, int k, aw_lanes
     const lreal wr = AW_LSPLAT(w) * cs, wi = AW_LSPLAT(w) * sn;
     AW_STORE_LANES(wr, re);
     AW_STORE_LANES(wi, im);
-    for (int j = 0; j < AW_LANES; ++j) AW_STORE_PAIR(at + (aw_u64)d * signal + (aw_u64)(2 * AW_NAFF_GROUP * j), re[j], im[j]);
+    for (int j = 0; j < AW_LANES; ++j)
+      AW_STORE_PAIR(at + (aw_u64)d * signal + (aw_u64)(2 * AW_NAFF_GROUP * j), re[j], im[j]);
   }
   if (m != n - 1) return;
   for (int d = 0; d < 3; ++d) {

@@ -26,7 +26,7 @@ namespace {
 
 constexpr unsigned kBlock = 128;     // threads per block (a power of two: aw_group_reduce)
 constexpr unsigned kFoldBlock = 256;
-constexpr unsigned kFreqBlock = 128;  // threads per block of aw_frequencies (AW_CUDA_FREQ_BLOCK's default)
+constexpr unsigned kFreqBlock = 128;  // threads per block of aw_frequencies (4 warps: 4 trajectories)
 
 class CudaMemory final : public DeviceMemory {
  public:
