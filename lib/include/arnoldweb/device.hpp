@@ -54,6 +54,11 @@ struct ChunkOutput {
   // out (the output table: rec_reals reals and rec_ints integers each).
   std::vector<double> rec_r;
   std::vector<std::int64_t> rec_i;
+  // Whatever a device holds on rec_r and rec_i's memory (CUDA: the pages
+  // locked for its copies), let go when the last copy of these handles goes:
+  // they travel with the records, so letting go is off the run's path.
+  // Declared after the records: released before their memory is freed.
+  std::vector<std::shared_ptr<void>> holds;
 };
 
 class Backend {

@@ -68,12 +68,14 @@ class ComputeDevice {
   virtual std::unique_ptr<DeviceMemory> allocate(std::size_t bytes, const char* what) = 0;
   virtual void upload(DeviceMemory& to, const void* from, std::size_t bytes) = 0;
   virtual void download(const DeviceMemory& from, void* to, std::size_t bytes) = 0;
-  // Host memory that a download will soon fill (the caller's, alive until
-  // download_done): a device may lock it while its kernels run, so that the
-  // copy goes at the bus's speed (CUDA). No-ops by default; DownloadAhead
-  // pairs them.
-  virtual void download_ahead(void* to, std::size_t bytes) { (void)to, (void)bytes; }
-  virtual void download_done(void* to) { (void)to; }
+  // Host memory that a download will soon fill, `bytes` at `to`: a device may
+  // lock it while its kernels run, so that the copy goes at the bus's speed
+  // (CUDA). The handle lets go when its last copy goes, which must be before
+  // the memory is freed (ChunkOutput::holds); null where nothing is held.
+  virtual std::shared_ptr<void> hold_for_download(void* to, std::size_t bytes) {
+    (void)to, (void)bytes;
+    return nullptr;
+  }
   virtual void zero(DeviceMemory& m) = 0;
 
   virtual LaunchShape shape(std::uint64_t count) const = 0;
@@ -96,23 +98,5 @@ class ComputeDevice {
 
 // The one Backend over a ComputeDevice.
 std::unique_ptr<Backend> make_ensemble_backend(std::unique_ptr<ComputeDevice> device);
-
-// download_ahead now, download_done when it goes out of scope (an exception
-// included): the memory is never freed while a device holds it locked.
-class DownloadAhead {
- public:
-  DownloadAhead(ComputeDevice& dev, void* to, std::size_t bytes) : dev_(dev), to_(to) {
-    if (to_) dev_.download_ahead(to_, bytes);
-  }
-  ~DownloadAhead() {
-    if (to_) dev_.download_done(to_);
-  }
-  DownloadAhead(const DownloadAhead&) = delete;
-  DownloadAhead& operator=(const DownloadAhead&) = delete;
-
- private:
-  ComputeDevice& dev_;
-  void* to_;
-};
 
 }  // namespace arnoldweb::detail

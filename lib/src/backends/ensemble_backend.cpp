@@ -60,12 +60,13 @@ class EnsembleBackend final : public Backend {
     // The host's memory for what comes back, while the device works: fresh
     // memory costs its first touch (~30 ms for the 84 MB of records of 1.5
     // million trajectories with frequencies), which a GPU's launches hide.
+    out.holds.clear();  // an earlier launch's, before its memory is reused
     out.counters.assign(AW_C_COUNT, 0);
     out.group_stats.assign(AW_GROUP_STATS * shape.groups, 0.0);
     out.rec_r.assign(count * rec_reals_, 0.0);
     out.rec_i.assign(count * rec_ints_, 0);
-    const DownloadAhead rec_r_ahead(*dev_, float_ ? nullptr : out.rec_r.data(), out.rec_r.size() * sizeof(double));
-    const DownloadAhead rec_i_ahead(*dev_, out.rec_i.data(), out.rec_i.size() * sizeof(std::int64_t));
+    if (!float_) out.holds.push_back(dev_->hold_for_download(out.rec_r.data(), out.rec_r.size() * sizeof(double)));
+    out.holds.push_back(dev_->hold_for_download(out.rec_i.data(), out.rec_i.size() * sizeof(std::int64_t)));
     dev_->finish("trajectories [" + std::to_string(first) + ", " + std::to_string(first + count) + ")");
 
     dev_->download(*b_[AW_BUF_COUNTERS], out.counters.data(), AW_C_COUNT * 4);

@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -99,6 +100,7 @@ class Reduction {
   struct Arenas {
     std::vector<double> reals;
     std::vector<std::int64_t> ints;
+    std::vector<std::shared_ptr<void>> holds;  // the device's on their memory (ChunkOutput::holds)
   };
   std::map<std::uint64_t, Arenas> records_;  // the chunks' record arenas, by first trajectory of the chunk
   // time slices: per block (by its first trajectory), how many slices are done
