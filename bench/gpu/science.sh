@@ -8,7 +8,8 @@
 # 2. the D(eps) scan of scenes/fgl_diffusion.toml, shortened to AW_DSCAN_T (default 1e5 T) per eps,
 #    for the values of AW_DSCAN_EPS on a grid of AW_DSCAN_RES^2 (default 362^2) trajectories, each
 #    sample the mean of the actions over its interval; each run's summary.json, diffusion.csv and diffusion.png kept
-#    (bench/gpu/d_eps_fit.py fits D(eps) from them);
+#    (bench/gpu/d_eps_fit.py fits D(eps) from them; with AW_DSCAN_CENTRES, the square at other places
+#    along the resonance, and bench/gpu/d_eps_places.py fits the law to the mean over the places);
 # 3. a sliced long run (scenes/fig4_diffusion.toml at N = 32,768 to AW_FIG4_T, run.slice), once in
 #    one piece and once killed with kill -9 and resumed (twice), with both runs' digests.
 # Prints one line per run: case, wall seconds of the process, the run's own seconds.
