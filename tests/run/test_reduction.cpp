@@ -6,10 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <random>
 
 #include "arnoldweb/arnoldweb.hpp"
 #include "arnoldweb/version.hpp"
+#include "plan/plan_params.hpp"
 #include "run/checkpoint_image.hpp"
 #include "run/exact_sum.hpp"
 #include "run/job_checkpoints.hpp"
@@ -109,6 +111,35 @@ TEST_SUITE("reduction") {
     check_same(plain, a.result());
     // the same chunk twice is refused, not counted twice
     CHECK_THROWS(a.merge(b_read));
+  }
+
+  TEST_CASE("a device's hold on a chunk's records lasts as long as the records, and no longer") {
+    // CUDA locks the host memory its read-back fills (ChunkOutput::holds); the lock is let go when
+    // the records are freed, not on the run's path, and never after their memory is gone
+    const arnoldweb::Plan plan = arnoldweb::make_plan(awtest::scene_from(kScene));
+    const auto& ints = arnoldweb::detail::params(plan).ints;
+    int released = 0;
+    const auto hold = [&released] { return std::shared_ptr<void>(&released, [&released](void*) { ++released; }); };
+    {
+      Reduction red(plan);
+      arnoldweb::ChunkOutput out;
+      out.counters.assign(AW_C_COUNT, 0);
+      out.rec_r.assign(1024 * static_cast<std::size_t>(ints.rec_reals), 0.0);
+      out.rec_i.assign(1024 * static_cast<std::size_t>(ints.rec_ints), 0);
+      out.holds = {hold(), hold()};
+      red.add(0, 1024, out);
+      CHECK(out.holds.empty());  // taken with the records
+      CHECK(released == 0);
+      const arnoldweb::Result r = red.result();  // reading the records out copies them
+      CHECK(r.completed == 1024);
+      CHECK(released == 0);
+      // a chunk whose output is dropped lets go of its hold with it
+      arnoldweb::ChunkOutput dropped;
+      dropped.holds = {hold()};
+      dropped = arnoldweb::ChunkOutput{};
+      CHECK(released == 1);
+    }
+    CHECK(released == 3);  // the reduction's records freed: their holds let go
   }
 
   TEST_CASE("a damaged image, or one of another plan, is refused") {
