@@ -34,7 +34,7 @@ AW_FN void aw_ensemble_item(aw_config cfg, aw_lanes l, aw_i64 seg_first, aw_i64 
   aw_window_start ws;
   const aw_i64 segments = ip->segments;
   if (seg_first == 0) {
-    int given[AW_LANES];
+    int given[AW_LANES] = {0}; /* read only where aw_carry_load_state set it */
     lreal accepted = AW_LSPLAT(AW_R(1.0));
     if (AW_HAS(AW_F_CARRY) && cfg.initial == AW_INITIAL_FILE)
       aw_carry_load_state(&s, given, out, ip, l);

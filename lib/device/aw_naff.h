@@ -426,6 +426,9 @@ AW_FN aw_u64 aw_naff_sample_at(int k, aw_u64 gs) {
   return (aw_u64)(k / AW_NAFF_GROUP) * gs + (aw_u64)(2 * (k % AW_NAFF_GROUP));
 }
 
+/* A member's samples lie at one place of their groups (aw_naff_member_sums). */
+typedef char aw_naff_group_divides_team[(AW_NAFF_TEAM % AW_NAFF_GROUP == 0) ? 1 : -1];
+
 /* Add the members' values pairwise (p[0 .. T-1], overwritten): the tree. */
 AW_FN real aw_naff_tree(real* p) {
   for (int h = AW_NAFF_TEAM / 2; h >= 1; h >>= 1)
@@ -448,7 +451,6 @@ AW_FN void aw_naff_member_sums(AW_GLOBAL const real* z, aw_u64 gs, int n, int t0
    * sample: dividing each sample's index was a quarter of the GPU analysis
    * kernel's instructions) */
   const aw_u64 along = (aw_u64)(AW_NAFF_TEAM / AW_NAFF_GROUP) * gs;
-  typedef char aw_naff_group_divides_team[(AW_NAFF_TEAM % AW_NAFF_GROUP == 0) ? 1 : -1];
   real first[AW_LANES];
   aw_u64 start[AW_LANES];
   for (int j = 0; j < AW_LANES; ++j) {
