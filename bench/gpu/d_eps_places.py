@@ -5,7 +5,8 @@ with AW_DSCAN_CENTRES: a table, the law's fits and a picture.
     python3 bench/gpu/d_eps_places.py [--svg PATH] [--csv PATH] RESULTS_DIR_OR_CSV...
 
 Each RESULTS_DIR holds dscan_<eps>@<c>/summary.json: the diffusion coefficient along the resonance
-of the square about (c, c) (--csv writes them as one table, which this script reads back). One square is one sample of the local D, which changes by factors 5-30
+of the square about (c, c) (--csv writes them as one table, which this script reads back).
+One square is one sample of the local D, which changes by factors 6-32
 from place to place (docs/frequencies.md, "The D(eps) scan"); so for each eps this takes the mean of
 ln D over the places (the geometric mean of D) and its standard error over them, and fits
 ln D = ln D0 - c eps^-a weighted by those errors: for each a the weighted least-squares line, its
