@@ -66,6 +66,16 @@ def fit_law(rows, fixed_a=None, weighted=True):
     return best
 
 
+def svg_axes(W, H, m, xlabel, ylabel):
+    """The opening of a W x H picture with axes m pixels in from its edges and their labels."""
+    return [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" font-family="sans-serif" font-size="12">',
+            f'<rect width="{W}" height="{H}" fill="white"/>',
+            f'<line x1="{m}" y1="{H - m}" x2="{W - m}" y2="{H - m}" stroke="black"/>',
+            f'<line x1="{m}" y1="{m}" x2="{m}" y2="{H - m}" stroke="black"/>',
+            f'<text x="{W / 2}" y="{H - 20}" text-anchor="middle">{xlabel}</text>',
+            f'<text x="15" y="{H / 2}" transform="rotate(-90 15 {H / 2})" text-anchor="middle">{ylabel}</text>']
+
+
 def svg(rows, law, path):
     pts = [(r["eps"] ** -law["a"], math.log10(r["along"]["D"]),
             r["along"]["D_error"] / (r["along"]["D"] * math.log(10))) for r in rows if r["along"]["D"] > 0]
@@ -75,12 +85,7 @@ def svg(rows, law, path):
     W, H, m = 560, 380, 60
     X = lambda x: m + (x - x0) / (x1 - x0 or 1) * (W - 2 * m)
     Y = lambda y: H - m - (y - y0) / (y1 - y0) * (H - 2 * m)
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" font-family="sans-serif" font-size="12">',
-           f'<rect width="{W}" height="{H}" fill="white"/>',
-           f'<line x1="{m}" y1="{H - m}" x2="{W - m}" y2="{H - m}" stroke="black"/>',
-           f'<line x1="{m}" y1="{m}" x2="{m}" y2="{H - m}" stroke="black"/>',
-           f'<text x="{W / 2}" y="{H - 20}" text-anchor="middle">eps^-{law["a"]:.2f}</text>',
-           f'<text x="15" y="{H / 2}" transform="rotate(-90 15 {H / 2})" text-anchor="middle">log10 D (along)</text>']
+    out = svg_axes(W, H, m, f'eps^-{law["a"]:.2f}', "log10 D (along)")
     for k in range(5):
         x = x0 + (x1 - x0) * k / 4
         y = y0 + (y1 - y0) * k / 4

@@ -21,7 +21,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from d_eps_fit import fit_line  # noqa: E402
+from d_eps_fit import fit_line, svg_axes  # noqa: E402
 
 
 FIELDS = ["D", "D_error", "slope_first_half", "slope_second_half", "drift"]
@@ -78,12 +78,8 @@ def svg(points, cells, a, p, q, path):
     y0, y1 = math.floor(min(ys)), math.ceil(max(ys))
     X = lambda x: m + (x - X0) / (X1 - X0) * (W - 2 * m)
     Y = lambda y: H - m - (y - y0) / (y1 - y0) * (H - 2 * m)
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" font-family="sans-serif" font-size="12">',
-           f'<rect width="{W}" height="{H}" fill="white"/>',
-           f'<line x1="{m}" y1="{H - m}" x2="{W - m}" y2="{H - m}" stroke="black"/>',
-           f'<line x1="{m}" y1="{m}" x2="{m}" y2="{H - m}" stroke="black"/>',
-           f'<text x="{W / 2}" y="{H - 18}" text-anchor="middle">eps^-{a:g} (eps from {max(points):g} to {min(points):g})</text>',
-           f'<text x="16" y="{H / 2}" transform="rotate(-90 16 {H / 2})" text-anchor="middle">log10 D along the resonance (per T)</text>']
+    out = svg_axes(W, H, m, f"eps^-{a:g} (eps from {max(points):g} to {min(points):g})",
+                   "log10 D along the resonance (per T)")
     for k in range(5):
         x = X0 + (X1 - X0) * k / 4
         out.append(f'<text x="{X(x):.1f}" y="{H - m + 16}" text-anchor="middle">{x:.2f}</text>')
@@ -129,14 +125,15 @@ def main():
         mu, se, _ = points[e]
         print(f"| {e:g} | " + " | ".join(row) + f" | **{math.exp(mu):.2e}** | {math.exp(se):.2f} |")
     n = len(points)
-    fits = {a: fit(points, lambda e, a=a: e ** -a) for a in [0.05 * k for k in range(1, 41)] + [0.21, 0.25]}
+    law = lambda a: fit(points, lambda e: e ** -a)
+    fits = {a: law(a) for a in [0.05 * k for k in range(1, 41)]}  # the grid for the best a and its interval
     best = min(fits, key=lambda a: fits[a][2])
     print(f"\nln D = ln D0 - c eps^-a weighted by the standard errors ({n} values of eps, {n - 2} degrees of freedom "
           "at a fixed a):\n")
     print("| a | c | D0 | chi-square | above the best |")
     print("|---|---|---|---|---|")
     for a in (0.1, 0.21, 0.25, 0.3, 0.5, 0.75, 1.0, 1.5, 2.0):
-        p, q, chi2 = fits[a] if a in fits else fit(points, lambda e: e ** -a)
+        p, q, chi2 = law(a)
         print(f"| {a:g} | {-q:.3g} | {math.exp(p):.3g} | {chi2:.2f} | {chi2 - fits[best][2]:.2f} |")
     inside = [a for a in sorted(fits) if fits[a][2] - fits[best][2] < 3.84]
     print(f"\nbest a on the grid: {best:g} (chi-square {fits[best][2]:.2f}); a with chi-square within 3.84 of the "
@@ -144,7 +141,7 @@ def main():
     p, q, chi2 = fit(points, math.log)
     print(f"power law ln D = ln D0 + n ln eps: n = {q:.2f}, chi-square {chi2:.2f}")
     if path:
-        p, q, _ = fits[0.25]
+        p, q, _ = law(0.25)
         svg(points, cells, 0.25, p, q, path)
 
 
