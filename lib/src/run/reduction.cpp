@@ -66,7 +66,6 @@ void Reduction::add(const ChunkWork& work, ChunkOutput& out) {
     if (plan_->slices > 1) {
       Block& b = blocks_.at(work.first);
       b.slices_done = plan_->slices;
-      b.carry.holds.clear();  // before the memory they hold
       b.carry = {};
     }
     return;
@@ -74,7 +73,6 @@ void Reduction::add(const ChunkWork& work, ChunkOutput& out) {
   Block& b = blocks_.at(work.first);
   if (b.count != work.count || work.seg_first != b.slices_done * plan_->slice_segments)
     throw std::runtime_error("a time slice out of order");
-  b.carry.holds.clear();  // before the memory they hold
   b.carry = {std::move(out.rec_r), std::move(out.rec_i), std::move(out.holds)};
   ++b.slices_done;
   chunks.push_back(work.count);
@@ -147,11 +145,8 @@ void Reduction::add(std::uint64_t first, std::uint64_t count, ChunkOutput& out) 
   }
   // the records are taken, not copied (a chunk's can be 100 MB: the copy was a third of the host's
   // time in a frequency run of 1.5 million trajectories on an H100)
-  if (!out.rec_r.empty() || !out.rec_i.empty()) {
-    Arenas& a = records_[first];
-    a.holds.clear();  // before the memory they hold
-    a = {std::move(out.rec_r), std::move(out.rec_i), std::move(out.holds)};
-  }
+  if (!out.rec_r.empty() || !out.rec_i.empty())
+    records_[first] = {std::move(out.rec_r), std::move(out.rec_i), std::move(out.holds)};
   chunks.push_back(count);
 }
 

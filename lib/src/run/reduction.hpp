@@ -100,7 +100,9 @@ class Reduction {
   struct Arenas {
     std::vector<double> reals;
     std::vector<std::int64_t> ints;
-    std::vector<std::shared_ptr<void>> holds;  // the device's on their memory (ChunkOutput::holds)
+    // the device's on their memory (ChunkOutput::holds): released with them (when arenas are
+    // replaced, just after the old ones are freed: letting go of a lock touches no data)
+    std::vector<std::shared_ptr<void>> holds;
   };
   std::map<std::uint64_t, Arenas> records_;  // the chunks' record arenas, by first trajectory of the chunk
   // time slices: per block (by its first trajectory), how many slices are done
