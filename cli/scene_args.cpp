@@ -26,6 +26,11 @@ Scene load_scene_args(const SceneArgs& a) {
   return load_scene(a.scene, sets, labels);
 }
 
+std::optional<std::string> read_device_option(const std::optional<std::string>& device) {
+  if (!device) return device;
+  return parse_scene("", "", {"run.device=" + *device}, {"--device " + *device}).device;
+}
+
 PreparedJob prepare_job(const SceneArgs& args, bool force, std::string* device_warning) {
   return prepare_scene_job(load_scene_args(args), args.scene, force, device_warning);
 }

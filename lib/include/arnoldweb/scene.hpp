@@ -197,7 +197,8 @@ Scene parse_scene(const std::string& text, const std::string& file,
 // separated by commas ("cuda:0,cuda:1"). The entries of a value as written: a
 // list's ids in order, any other value on its own.
 std::vector<std::string> device_entries(const std::string& device);
-// Whether `id` is one device id: "cpu", "opencl:N" or "cuda:N".
+// Whether `id` is one device id: "cpu", "opencl:N" or "cuda:N" (N in decimal
+// without a leading zero, as `arnoldweb devices` lists it).
 bool is_device_id(const std::string& id);
 // The first id that a list names twice, or "".
 std::string repeated_device(const std::string& device);
