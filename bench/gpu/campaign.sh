@@ -53,9 +53,8 @@ sha_of() { sha256sum | cut -c1-64; }
 
 # ------------------------------------------------------------------ the campaign folder
 campaign_dir() {  # NAME or PATH -> the folder holding campaign.conf
-  local c=$1
-  [[ $c != */* && -f bench/gpu/campaigns/$c/campaign.conf ]] && c=bench/gpu/campaigns/$c
-  c=${c%/}
+  local c=${1%/}
+  [ ! -f "$c/campaign.conf" ] && [ -f "bench/gpu/campaigns/$c/campaign.conf" ] && c=bench/gpu/campaigns/$c
   [ -f "$c/campaign.conf" ] || die "$1: no campaign.conf there (a campaign is a folder with campaign.conf; bench/gpu/campaigns/)"
   echo "$c"
 }
@@ -240,6 +239,7 @@ run_one() {
     fi
     (cd "$WORK/run" && for f in $KEEP; do [ -e "$f" ] && cp -r --parents "$f" "$WORK/result/"; done)
     cp -r "$WORK/result" "$stage/result"
+    rm -rf "$CDIR/result"; cp -r "$WORK/result" "$CDIR/result"  # for the campaigns after it in this job
   else
     # the newest checkpoint beside the run (the one it adopted and rewrote; or, after SIGKILL,
     # the last periodic one)
