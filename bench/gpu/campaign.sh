@@ -32,7 +32,7 @@
 # GPU machine: bench/gpu/run.sh build), unpacks the campaign's checkpoint and refuses (exit 2)
 # when its sha256 is not the one the ledger's last entry recorded, runs `arnoldweb run SCENE
 # --resume` (which itself refuses a checkpoint of another scene or other values), and sends
-# SIGTERM AW_JOB_SECONDS - AW_JOB_RESERVE seconds after the job began (default 540 - 45; not
+# SIGTERM AW_JOB_SECONDS - AW_JOB_RESERVE seconds after the job began (default 540 - 45; 0: at once; not
 # before the run's first progress line, so that its handler is in place and a slice is done): the
 # run stops after its current slice and writes its checkpoint; AW_JOB_GRACE (30) seconds after
 # that it is killed and the last periodic checkpoint (run.checkpoint_every) is taken. $OUT then
@@ -44,11 +44,13 @@ set -uo pipefail
 
 PART_BYTES=$((15 * 1024 * 1024))  # under the device tool's 16 MiB a file
 WORKROOT=${AW_CAMPAIGN_WORK:-/tmp/aw-campaign}
-T0=$(date +%s.%N)
+T0=${EPOCHREALTIME/./}  # microseconds; the clock is read without a process (the job's loop polls it)
 
 die() { echo "campaign: $*" >&2; exit 2; }
-now() { awk -v t0="$T0" -v t="$(date +%s.%N)" 'BEGIN { printf "%.1f", t - t0 }'; }
-later_than() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a >= b) }'; }  # a >= b, decimals
+us() { echo $(( ${EPOCHREALTIME/./} - T0 )); }                           # microseconds of this job
+us_of() { awk -v s="$1" 'BEGIN { printf "%d", s * 1e6 }'; }               # seconds (decimals) in us
+sec() { awk -v u="$1" 'BEGIN { printf "%.1f", u / 1e6 }'; }               # us in seconds, 0.1
+now() { sec "$(us)"; }
 sha_of() { sha256sum | cut -c1-64; }
 
 # ------------------------------------------------------------------ the campaign folder
@@ -205,25 +207,24 @@ run_one() {
   local stage="$STAGE/$((++CAMPAIGNS_TOUCHED))"  # from here on the job records an entry
   mkdir -p "$stage"
   echo "$CDIR" >"$stage/campaign"
-  started=$(now)
+  started=$(us)
   "$AW" "${cmd[@]}" >"$WORK/run.log" 2>&1 &
-  local pid=$! termed="" killed="" late
-  late=$(awk -v t="$TERM_AT" -v g="$GRACE" 'BEGIN { print t + g }')
+  local pid=$! termed="" killed="" going=""
   while kill -0 "$pid" 2>/dev/null; do
     # SIGTERM once the budget is spent and the run has reported progress (its signal handler is
     # in place and a slice is done: every job moves the campaign on), or GRACE s later regardless
-    if [ -z "$termed" ] && later_than "$(now)" "$TERM_AT" &&
-       { grep -q '^progress:' "$WORK/run.log" || later_than "$(now)" "$late"; }; then
+    [ -z "$going" ] && grep -q '^progress:' "$WORK/run.log" && going=1
+    if [ -z "$termed" ] && [ "$(us)" -ge "$TERM_AT" ] && { [ -n "$going" ] || [ "$(us)" -ge $((TERM_AT + GRACE)) ]; }; then
       echo "[$(now) s] $CDIR: the job's budget is spent: SIGTERM (stop after the current slice, keep it)"
-      kill -TERM "$pid" 2>/dev/null; termed=$(now)
-    elif [ -n "$termed" ] && [ -z "$killed" ] && later_than "$(now)" "$(awk -v t="$termed" -v g="$GRACE" 'BEGIN { print t + g }')"; then
-      echo "[$(now) s] $CDIR: still running $GRACE s after SIGTERM: SIGKILL (the last periodic checkpoint stays)"
+      kill -TERM "$pid" 2>/dev/null; termed=$(us)
+    elif [ -n "$termed" ] && [ -z "$killed" ] && [ "$(us)" -ge $((termed + GRACE)) ]; then
+      echo "[$(now) s] $CDIR: still running $(sec "$GRACE") s after SIGTERM: SIGKILL (the last periodic checkpoint stays)"
       kill -KILL "$pid" 2>/dev/null; killed=1
     fi
-    sleep 0.2
+    sleep 0.05
   done
   wait "$pid"; rc=$?
-  seconds=$(awk -v a="$started" -v b="$(now)" 'BEGIN { printf "%.1f", b - a }')
+  seconds=$(sec $(( $(us) - started )))
   progress=$(grep -o 'progress: *[0-9]*%' "$WORK/run.log" | tail -1 | grep -o '[0-9]*%'); [ -n "$progress" ] || progress=-
   tail -4 "$WORK/run.log" | sed "s|^|  $CDIR: |"
 
@@ -272,15 +273,17 @@ cmd_job() {
   [ -z "$(ls -A "$OUT")" ] || die "$OUT is not empty (a job writes its files there)"
   exec > >(tee "$OUT/job.log") 2>&1
   local budget=${AW_JOB_SECONDS:-540} reserve=${AW_JOB_RESERVE:-45}
-  GRACE=${AW_JOB_GRACE:-30}
-  TERM_AT=$(awk -v b="$budget" -v r="$reserve" 'BEGIN { print b - r }')
-  local start_until; start_until=$(awk -v t="$TERM_AT" 'BEGIN { print t - (t > 60 ? 30 : 0) }')
-  echo "campaign job: ${dirs[*]}; SIGTERM at ${TERM_AT} s of the job (AW_JOB_SECONDS=$budget, AW_JOB_RESERVE=$reserve)"
+  GRACE=$(us_of "${AW_JOB_GRACE:-30}")
+  TERM_AT=$(us_of "$(awk -v b="$budget" -v r="$reserve" 'BEGIN { print b - r }')")
+  local start_until=$((TERM_AT - (TERM_AT > 60000000 ? 30000000 : 0)))  # a campaign after the first needs 30 s
+  echo "campaign job: ${dirs[*]}; SIGTERM at $(sec "$TERM_AT") s of the job (AW_JOB_SECONDS=$budget, AW_JOB_RESERVE=$reserve)"
   build_program
   STAGE=$(mktemp -d); CAMPAIGNS_TOUCHED=0; STATE=""
   local rc=0
   for c in "${dirs[@]}"; do
-    if later_than "$(now)" "$start_until"; then echo "[$(now) s] too little time left to start $c: for the next job"; break; fi
+    if [ "$CAMPAIGNS_TOUCHED" -gt 0 ] && [ "$(us)" -ge "$start_until" ]; then
+      echo "[$(now) s] too little time left to start $c: for the next job"; break
+    fi
     run_one "$c"; rc=$?
     [ "$STATE" = "done" ] || [ "$STATE" = skipped ] || break
   done
@@ -373,13 +376,13 @@ cmd_verify() {
   local sets=() s
   for s in "${SETS[@]}" "${VERIFY_SETS[@]}"; do sets+=(--set "$s"); done
   echo "verify $dir: $SCENE ${sets[*]} on $DEVICE"
-  local t0 t1 tsliced
+  local t0 tsliced
   "$AW" run "$SCENE" "${sets[@]}" --set run.slice=0 --set run.checkpoint_every=off --quiet --device "$DEVICE" --out "$W/plain" ||
     die "the run in one piece failed"
-  t0=$(now)
+  t0=$(us)
   "$AW" run "$SCENE" "${sets[@]}" --set run.checkpoint_every=off --quiet --device "$DEVICE" --out "$W/sliced" ||
     die "the sliced run failed"
-  t1=$(now); tsliced=$(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }')
+  tsliced=$(sec $(( $(us) - t0 )))
   # the same through jobs: a copy of the campaign with the shortened values, each job a new
   # process given a third of the sliced run's time, its checkpoint packed, accepted, handed over
   local camp="$W/campaign"; mkdir -p "$camp"
