@@ -270,11 +270,12 @@ cmd_job() {
   for c in "$@"; do dirs+=("$(campaign_dir "$c")"); done
   OUT=${OUT:-$PWD/campaign-out}
   mkdir -p "$OUT" "$WORKROOT"
-  [ -z "$(ls -A "$OUT")" ] || die "$OUT is not empty (a job writes its files there)"
+  ! ls "$OUT"/job.log "$OUT"/job.tgz* "$OUT"/checkpoint.awck.gz* >/dev/null 2>&1 ||
+    die "$OUT holds another job's files (job.log, job.tgz, checkpoint.awck.gz): one job a folder"
   exec > >(tee "$OUT/job.log") 2>&1
   local budget=${AW_JOB_SECONDS:-540} reserve=${AW_JOB_RESERVE:-45}
   GRACE=$(us_of "${AW_JOB_GRACE:-30}")
-  TERM_AT=$(us_of "$(awk -v b="$budget" -v r="$reserve" 'BEGIN { print b - r }')")
+  TERM_AT=$(us_of "$(awk -v b="$budget" -v r="$reserve" 'BEGIN { print (b > r ? b - r : 0) }')")
   local start_until=$((TERM_AT - (TERM_AT > 60000000 ? 30000000 : 0)))  # a campaign after the first needs 30 s
   echo "campaign job: ${dirs[*]}; SIGTERM at $(sec "$TERM_AT") s of the job (AW_JOB_SECONDS=$budget, AW_JOB_RESERVE=$reserve)"
   build_program

@@ -344,7 +344,8 @@ def cmd_extract(o):
         fx = place_fit(project(ok, f, first), t, {"full": ranges["full"]})
         rows.append([eps, duration, p, cs[p], ORBITS, len(ok), fa["full"][0], fa["full"][1], fa["first"][0],
                      fa["first"][1], fa["second"][0], fa["second"][1], fa["sigma0sq"], fx["full"][0], fx["full"][1]])
-        curves += [[p, t[k], fa["var"][k], fx["var"][k], fa["mean"][k]] for k in range(len(t))]
+        curves += [[p, f"{t[k]:.9g}", f"{fa['var'][k]:.7g}", f"{fx['var'][k]:.7g}", f"{fa['mean'][k]:.7g}"]
+                   for k in range(len(t))]
     with open(os.path.join(o["out"], "places.csv"), "w", newline="") as g:
         w = csv.writer(g)
         w.writerow(PLACE_FIELDS)
