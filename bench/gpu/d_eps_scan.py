@@ -545,16 +545,25 @@ def step_check(main, step, t_lo, t_hi):
     return len(ratios), m, se
 
 
+def median(v):
+    v = sorted(v)
+    return (v[(len(v) - 1) // 2] + v[len(v) // 2]) / 2 if v else float("nan")
+
+
 def cmd_fit(o, dirs):
     grid_step = float(o.get("grid", 0.01))
     grid = [round(0.02 + grid_step * i, 6) for i in range(int((1.5 - 0.02) / grid_step) + 1)]
     rows = load_results(dirs)
     res = analyse(rows, grid, o.get("no-place-effects") is None)
-    print("| eps | runs (places) | resolved, linear | not linear (interval) | unresolved (upper limit) |")
-    print("|---|---|---|---|---|")
+    print("| eps | runs (places) | resolved, linear | not linear (interval) | unresolved (upper limit) | "
+          "median D (per T) | median D 2nd half / 1st half |")
+    print("|---|---|---|---|---|---|---|")
     for e in res["eps"]:
         k = res["kinds"][e]
-        print(f"| {e:g} | {len(k)} | {k.count('point')} | {k.count('interval')} | {k.count('upper')} |")
+        mine = [r for r in rows if r["eps"] == e]
+        halves = [r["D_second"] / r["D_first"] for r in mine if r["D_first"] > 0 and r["D_second"] > 0]
+        print(f"| {e:g} | {len(k)} | {k.count('point')} | {k.count('interval')} | {k.count('upper')} | "
+              f"{median([r['D'] for r in mine]):.3g} | {median(halves):.2f} |")
     par = res["par"]
     print(f"\nlaw ln D = ln D0 - c eps^-a + u_place, scatter tau: a = {res['a']:.3f} "
           f"(68 %: {res['i68'][0]:.3f}-{res['i68'][1]:.3f}, sigma(a) = {res['sigma_a']:.3f}; "

@@ -149,6 +149,18 @@ class Law(unittest.TestCase):
         self.assertAlmostEqual(res["power"]["b1"], 6.3, delta=0.6)
         self.assertEqual(res["i95"][0], 0.02)  # the interval reaches the grid's smallest a
 
+    def test_fit_report(self):
+        import contextlib
+        import io
+        dirs = synthetic(self, {"a": 0.25, "places": 24, "seed": 8})
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out):
+            res = ds.cmd_fit({"grid": "0.05"}, dirs)
+        text = out.getvalue()
+        self.assertEqual(sum(1 for line in text.splitlines() if line.startswith("| 0.") and " | 24 | " in line), 12)
+        self.assertIn(f"a = {res['a']:.3f}", text)
+        self.assertIn("the power law is excluded" if res["lr_power"] > 3.84 else "not excluded", text)
+
     def test_step_check(self):
         main, step = temp_dir(self), temp_dir(self)
         for d, scale in ((main, 1.0), (step, 2.0)):
