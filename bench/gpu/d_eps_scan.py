@@ -29,6 +29,9 @@ import os
 import random
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from d_eps_fit import fit_line  # noqa: E402
+
 E_FGL = 0.5                     # model.energy of the scenes
 V_AT_ZERO = 1.0 / 7.0           # the fgl potential's 1/(cos + cos + cos + 4) at angles 0
 ACROSS_HALF = 2e-5              # candidates: |I1 - I2|/2 from 1e-8 to this, geometric ...
@@ -249,11 +252,8 @@ def cmd_states(o):
 
 # ------------------------------------------------------------------ D per place (pure)
 def line_fit(t, y):
-    n = len(t)
-    mt, my = sum(t) / n, sum(y) / n
-    stt = sum((a - mt) ** 2 for a in t)
-    q = sum((a - mt) * (b - my) for a, b in zip(t, y)) / stt
-    return my - q * mt, q
+    """Least squares y = p + q t, equal weights: (p, q)."""
+    return fit_line(list(t), list(y), [1.0] * len(t))[:2]
 
 
 def ols_weights(t):
