@@ -280,6 +280,7 @@ cmd_job() {
   echo "campaign job: ${dirs[*]}; SIGTERM at $(sec "$TERM_AT") s of the job (AW_JOB_SECONDS=$budget, AW_JOB_RESERVE=$reserve)"
   build_program
   STAGE=$(mktemp -d); CAMPAIGNS_TOUCHED=0; STATE=""
+  trap 'rm -rf "$STAGE"' EXIT
   local rc=0
   for c in "${dirs[@]}"; do
     if [ "$CAMPAIGNS_TOUCHED" -gt 0 ] && [ "$(us)" -ge "$start_until" ]; then
@@ -291,7 +292,6 @@ cmd_job() {
   if [ "$CAMPAIGNS_TOUCHED" -gt 0 ]; then
     tar czf "$OUT/job.tgz" -C "$STAGE" . && pack "$OUT/job.tgz"
   fi
-  rm -rf "$STAGE"
   local files; files=$(ls "$OUT" | wc -l)
   [ "$files" -le 8 ] || echo "WARNING: $files files in $OUT: the device tool brings back 8"
   echo "[$(now) s] job over: $(ls "$OUT" | tr '\n' ' ')"
@@ -303,8 +303,9 @@ cmd_job() {
 cmd_accept() {
   local from=${1:?accept: name the folder of what came back (files_at of the device tool)}
   [ -d "$from" ] || die "$from: no such folder"
-  local stage; stage=$(mktemp -d)
-  trap 'rm -rf "$stage"' RETURN
+  STAGE=$(mktemp -d)
+  trap 'rm -rf "$STAGE"' EXIT
+  local stage=$STAGE
   if ! ls "$from"/job.tgz* >/dev/null 2>&1; then echo "accept: no job.tgz in $from: the job touched no campaign (see $from/job.log)"; return 1; fi
   unpack "$from" job.tgz | tar xzf - -C "$stage" || die "$from/job.tgz: damaged"
   local e dir n last entry job efrom eto state newck=""
