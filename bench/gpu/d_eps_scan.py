@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The D(eps) scan of issue 41: places along I1 = I2, orbits of each place's chaotic layer chosen by
 their FLI, one run per eps holding every place, and the law fitted with the unresolved runs kept.
-The plan, its rules and the commands: bench/gpu/campaigns/d_eps/README.md.
+The plan, its rules and the commands: bench/gpu/campaigns/README.md ("The D(eps) scan").
 
     d_eps_scan.py places [--n 128] [--out FILE]          the places, by the rule written down first
     d_eps_scan.py campaigns [--dir bench/gpu/campaigns/d_eps]   the campaign folders of the plan
@@ -149,7 +149,7 @@ def cmd_campaigns(o):
     for eps in SCAN_EPS:
         T = run_length(eps)
         write(f"fli-{eps!r}", [
-            f"# the FLI pre-selection at eps = {eps!r} (d_eps_scan.py campaigns; README.md)",
+            f"# the FLI pre-selection at eps = {eps!r} (d_eps_scan.py campaigns; bench/gpu/campaigns/README.md)",
             f"scene = {root}/fli.toml", f"set = model.epsilon={eps!r}", "set = ensemble.file={work}/candidates.h5",
             "device = cuda:0",
             f"prepare = {tool} candidates --eps {eps!r} --places {here} --out {{work}}/candidates.h5",
@@ -157,7 +157,7 @@ def cmd_campaigns(o):
             f"collect = {tool} select --eps {eps!r} --places {here} --fli {{run}}/indicators.h5 --out {{result}}",
             "keep = summary.json"])
         write(f"run-{eps!r}", [
-            f"# the D(eps) run at eps = {eps!r}, {T:g} T (d_eps_scan.py campaigns; README.md)",
+            f"# the D(eps) run at eps = {eps!r}, {T:g} T (d_eps_scan.py campaigns; bench/gpu/campaigns/README.md)",
             f"scene = {root}/diffusion.toml"] + diffusion_sets(eps, T, T / 100) + [
             "device = cuda:0",
             f"prepare = {tool} states --eps {eps!r} --places {here} --chosen {root}/fli-{eps!r}/result/chosen.txt.gz "
@@ -168,7 +168,7 @@ def cmd_campaigns(o):
     every = run_length(STEP_EPS) / 100
     write(f"step-{STEP_EPS!r}", [
         f"# the step-size check at eps = {STEP_EPS!r}: h/2 = 0.01 T on every {STEP_EVERY_PLACE}th place to "
-        f"{STEP_SPAN:g} T, sampled as run-{STEP_EPS!r} (README.md)",
+        f"{STEP_SPAN:g} T, sampled as run-{STEP_EPS!r} (bench/gpu/campaigns/README.md)",
         f"scene = {root}/diffusion.toml"] + diffusion_sets(STEP_EPS, STEP_SPAN, every, 0.01) + [
         "device = cuda:0",
         f"prepare = {tool} states --eps {STEP_EPS!r} --places {here} --chosen {root}/fli-{STEP_EPS!r}/result/chosen.txt.gz "
