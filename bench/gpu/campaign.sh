@@ -267,7 +267,7 @@ run_one() {
 cmd_job() {
   [ $# -gt 0 ] || die "job: name at least one campaign"
   local dirs=() c
-  for c in "$@"; do dirs+=("$(campaign_dir "$c")"); done
+  for c in "$@"; do dirs+=("$(campaign_dir "$c")") || exit 2; done
   OUT=${OUT:-$PWD/campaign-out}
   mkdir -p "$OUT" "$WORKROOT"
   ! ls "$OUT"/job.log "$OUT"/job.tgz* "$OUT"/checkpoint.awck.gz* >/dev/null 2>&1 ||
@@ -350,7 +350,7 @@ cmd_accept() {
 cmd_status() {
   local c dir
   for c in "$@"; do
-    dir=$(campaign_dir "$c")
+    dir=$(campaign_dir "$c") || exit 2
     echo "== $dir: $(ledger_entries "$dir") job(s)"
     [ -f "$dir/ledger.tsv" ] && awk -F'\t' '{ printf "  %-5s %-21s %-5s %-8s %-8s %-9s %-13.12s %s\n", $1, $2, $6, $7, $8, $9, $5, $11 }' "$dir/ledger.tsv"
     local want got; want=$(ledger_field "$dir" 5)
@@ -365,7 +365,7 @@ cmd_status() {
 
 # ------------------------------------------------------------------ verify
 cmd_verify() {
-  local dir; dir=$(campaign_dir "${1:?verify: name the campaign}")
+  local dir; dir=$(campaign_dir "${1:?verify: name the campaign}") || exit 2
   read_conf "$dir"
   [ ${#VERIFY_SETS[@]} -gt 0 ] || die "$dir/campaign.conf: no verify_set lines (the shortened run: e.g. run.duration at 1/100)"
   OUT=${OUT:-$PWD/campaign-out}

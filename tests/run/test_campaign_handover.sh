@@ -4,10 +4,11 @@
 # 1. `verify`: a small sliced scene in one piece, in slices, and in slices through jobs, each a new
 #    process stopped by SIGTERM, its checkpoint packed, accepted and handed over: the same digests,
 #    through more than one job.
-# 2. Refusals, none changing the campaign folder: `accept` refuses a checkpoint damaged on the way
-#    back and a job accepted twice; a job refuses a checkpoint whose sha256 is not the ledger's (a
-#    byte changed; the ledger's digest changed); a campaign whose values changed after a stop is
-#    refused by arnoldweb itself (another scene) and recorded as a failed job.
+# 2. Refusals, none changing the campaign folder: a job naming a folder that is no campaign;
+#    `accept` refuses a checkpoint damaged on the way back and a job accepted twice; a job refuses
+#    a checkpoint whose sha256 is not the ledger's (a byte changed; the ledger's digest changed); a
+#    campaign whose values changed after a stop is refused by arnoldweb itself (another scene) and
+#    recorded as a failed job.
 # 3. The campaign of part 2, continued to its end, gives the digests of the run in one piece.
 # Jobs have a budget of 0 s: SIGTERM at the run's first progress line, so that each stops after a
 # slice or so, whatever the machine's speed or load. Exit 77 (skipped) without python3 (the runner
@@ -68,6 +69,8 @@ jobs=$(sed -n 's/^verify: IDENTICAL (\([0-9]*\) jobs)$/\1/p' "$T/verify.log")
 plain=$(sed -n 's/^in one piece: *//p' "$T/verify.log")
 
 # ---- 2. refusals
+OUT=$T/nowhere bash $C job "$T/camp" "$T/no-such-campaign" >"$T/nowhere.log" 2>&1; rc=$?
+[ $rc -eq 2 ] && [ ! -e "$T/nowhere" ] || fail "a job naming a folder without campaign.conf: exit $rc, or files written"
 job 1 || { cat "$T/job-1.log"; fail "job 1"; }
 [ -f "$T/out-1/checkpoint.awck.gz" ] || { cat "$T/job-1.log"; fail "no checkpoint from job 1"; }
 before=$(snapshot)
