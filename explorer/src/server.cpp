@@ -108,10 +108,14 @@ int serve(const ServeOptions& o, const std::atomic<bool>& stop, const std::funct
   svr.set_write_timeout(30, 0);
   svr.set_keep_alive_timeout(2);
   svr.set_default_headers({{"X-Content-Type-Options", "nosniff"}, {"Cache-Control", "no-store"},
-                           {"Content-Security-Policy", "default-src 'self'; style-src 'self' 'unsafe-inline'"}});
+                           {"Content-Security-Policy", "default-src 'self'; style-src 'self' 'unsafe-inline'; img-src 'self' data: blob:"}});
   svr.set_pre_routing_handler([](const httplib::Request& req, httplib::Response& res) {
     if (req.method != "GET" && req.method != "POST" && req.method != "HEAD") {
       refuse(res, 405, "method " + req.method + " is not served (GET and POST only)");
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    if (!req.params.empty()) {  // everything a page asks is in the path or the body
+      refuse(res, 400, "this server takes no query parameters");
       return httplib::Server::HandlerResponse::Handled;
     }
     return httplib::Server::HandlerResponse::Unhandled;
@@ -211,6 +215,13 @@ int serve(const ServeOptions& o, const std::atomic<bool>& stop, const std::funct
       if (n > o.max_trajectories)
         throw BadRequest("trajectories " + std::to_string(n) + " is above this server's cap of " +
                          std::to_string(o.max_trajectories) + " (arnoldweb serve --max-trajectories)");
+      int nside = 0;
+      if (body.contains("nside")) {
+        if (!body["nside"].is_number_integer() || body["nside"].get<std::int64_t>() < 1 ||
+            body["nside"].get<std::int64_t>() > 8192)
+          throw BadRequest("nside must be an integer from 1 to 8192 (a power of two)");
+        nside = body["nside"].get<int>();
+      }
       if (!body.contains("region")) throw BadRequest("region is missing");
       region_overrides(body["region"]);  // its form, before anything is made
       std::lock_guard<std::mutex> lock(zoom_mutex);
@@ -219,7 +230,7 @@ int serve(const ServeOptions& o, const std::atomic<bool>& stop, const std::funct
       if (ec) return refuse(res, 500, "cannot make " + zoom_root + ": " + ec.message());
       const std::string dir = first_free(zoom_root, "zoom-", &zoom_counter);
       const std::string id = "z" + std::to_string(zoom_counter);
-      PreparedRun run = prepare_run(zoom_scene(source->scene, body["region"], n, dir), device);
+      PreparedRun run = prepare_run(zoom_scene(source->scene, body["region"], n, nside, dir), device);
       queue.submit(id, std::move(run), {{"kind", "zoom"}, {"source", source->id}, {"region", body["region"]},
                                         {"run", id}, {"dir", dir}});
       reply(res, 202, queue.status(id));

@@ -39,12 +39,13 @@ std::vector<std::string> region_overrides(const nlohmann::json& r) {
   throw BadRequest("region.kind must be \"cap\" or \"box\", not \"" + kind + "\"");
 }
 
-Scene zoom_scene(const Scene& source, const nlohmann::json& region, std::uint64_t trajectories,
+Scene zoom_scene(const Scene& source, const nlohmann::json& region, std::uint64_t trajectories, int nside,
                  const std::string& out_dir) {
   Scene s = source;
   s.panels.clear();  // a zoom is one run
   std::vector<std::string> sets = region_overrides(region);
   sets.push_back("ensemble.trajectories=" + std::to_string(trajectories));
+  if (nside) sets.push_back("observe.velocity_map.nside=" + std::to_string(nside));
   nlohmann::json dir = out_dir;
   sets.push_back("output.dir=" + dir.dump());
   // the scene reader checks every value, as for a scene file; the text it keeps (to_toml with

@@ -83,13 +83,23 @@ AW.zoom = (function () {
       ul.appendChild(li);
     }
   }
+  // a map finer for a smaller region: about 50 pixels across it, a power of two from the run's
+  // own nside up to 256 (a HEALPix map covers the whole sphere: 256 is 0.8 million pixels, 6 MB
+  // in map.h5)
+  function nsideFor(r, base) {
+    const across = r.kind === "cap" ? 2 * r.radius : Math.max(r.lon[1] - r.lon[0], r.lat[1] - r.lat[0]);
+    let n = base;
+    while (n < 256 && 58.6 / n > across / 50) n *= 2;
+    return n;
+  }
   async function run() {
     const n = Math.round(+$("zoom-n").value);
+    const base = AW.app.panels.length ? AW.app.panels[0].nside : 64;
     const source = AW.app.panels.length ? AW.app.panels[0].run.meta.id : null;
     try {
       const r = await AW.data.json("api/zooms", {
         method: "POST", headers: { "Content-Type": "application/json" },
-        body: JSON.stringify({ source, region, trajectories: n }),
+        body: JSON.stringify({ source, region, trajectories: n, nside: nsideFor(region, base) }),
       });
       running = r.id;
       $("zoom-run").disabled = true;

@@ -124,7 +124,8 @@ try:
     raw = base64.b64decode(png.split(",", 1)[1])
     check(raw[:8] == b"\x89PNG\r\n\x1a\n" and len(raw) > 10000, "the PNG button's image is a PNG")
     open(os.path.join(args.artifacts, "view_saved.png"), "wb").write(raw)
-    check(not S.console_errors(d), f"no console error after all that: {S.console_errors(d)}")
+    errors = S.console_errors(d)
+    check(not errors, f"no console error after all that: {errors}")
 finally:
     d.quit()
 
@@ -149,7 +150,8 @@ try:
     vals = d.execute_script("return document.getElementById('ro-values').textContent")
     check(f"A: {counts[pix]}" in vals and f"B: {b[pix]}" in vals, f"the readout gives both runs' counts: {vals}")
     check(abs(float(ro["value"]) - want) < 1e-4 * max(1, abs(want)), f"A - B is the signed chi-square term: {ro['value']} vs {want}")
-    check(not S.console_errors(d), f"no console error: {S.console_errors(d)}")
+    errors = S.console_errors(d)
+    check(not errors, f"no console error: {errors}")
     d.save_screenshot(os.path.join(args.artifacts, "view_compare.png"))
 finally:
     d.quit()
