@@ -22,7 +22,9 @@ class MemoryFile {
     const hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
     H5Pset_fapl_core(fapl, 1 << 16, 0);
     H5Pset_file_image(fapl, bytes_.data(), bytes_.size());
-    H5E_BEGIN_TRY { file_ = H5Fopen("explorer-image.h5", H5F_ACC_RDONLY, fapl); }
+    // the name only tells open images apart (HDF5 would hand back an open file of the same name)
+    const std::string name = "explorer-image:" + path;
+    H5E_BEGIN_TRY { file_ = H5Fopen(name.c_str(), H5F_ACC_RDONLY, fapl); }
     H5E_END_TRY;
     H5Pclose(fapl);
     if (file_ < 0) throw SavedRunError(path, "is not an HDF5 file HDF5 can open");
@@ -110,6 +112,7 @@ nlohmann::json read_run_fields(const std::string& dir, const nlohmann::json& sum
   for (const OutputLocation& row : output_locations()) {
     if (row.file.empty() || !listed(row.file)) continue;
     if (open_name != row.file) {
+      file.reset();
       file = std::make_unique<MemoryFile>(read_saved_file(dir, row.file), dir + "/" + row.file);
       open_name = row.file;
     }

@@ -396,7 +396,7 @@ AW.app = (function () {
     }
     if (modelList()) $("model-label").hidden = false;
     if (AW.fields) AW.fields.init(runs);
-    if (AW.zoom) AW.zoom.init();
+    const waiting = AW.zoom ? await AW.zoom.init() : false;  // true: the server is still running the scene
     showRuns();
     showPicked();
     const on = (id, ev, f) => $(id).addEventListener(ev, f);
@@ -414,7 +414,7 @@ AW.app = (function () {
     on("svg", "click", () => download("arnoldweb-circles.svg", URL.createObjectURL(new Blob([overlaySVG()], { type: "image/svg+xml" }))));
     window.addEventListener("resize", redraw);
     window.addEventListener("hashchange", () => { readHash(); syncControls(); redraw(); });
-    if (!panels.length && !(AW.fields && AW.fields.count())) error("none of the runs has a velocity map or fields to show");
+    if (!waiting && !panels.length && !(AW.fields && AW.fields.count())) error("none of the runs has a velocity map or fields to show");
     changed();
     document.body.dataset.ready = "1";
   }

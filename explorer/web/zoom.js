@@ -123,11 +123,12 @@ AW.zoom = (function () {
     if (s.state === "done") { location.reload(); return; }
     setTimeout(async () => waitForScene(await AW.data.json("api/zooms/" + encodeURIComponent(s.id))), 400);
   }
+  // Sets the zoom panel up; true while the server is still running the scene it was given
   async function init() {
-    if (!AW.data.served()) return;
-    try { server = await AW.data.json("api/server"); } catch (e) { AW.app.error(e.message); return; }
-    if (server.scene_run && server.scene_run.state !== "done") { waitForScene(server.scene_run); return; }
-    if (!server.zoom || !AW.app.panels.length) return;
+    if (!AW.data.served()) return false;
+    try { server = await AW.data.json("api/server"); } catch (e) { AW.app.error(e.message); return false; }
+    if (server.scene_run && server.scene_run.state !== "done") { waitForScene(server.scene_run); return true; }
+    if (!server.zoom || !AW.app.panels.length) return false;
     $("zoom").hidden = false;
     $("zoom-n").max = server.zoom.max_trajectories;
     $("zoom-cap").textContent = `at most ${server.zoom.max_trajectories} on ${server.zoom.device}`;
@@ -138,6 +139,7 @@ AW.zoom = (function () {
     $("zoom-run").addEventListener("click", run);
     $("zoom-cancel").addEventListener("click", cancel);
     list();
+    return false;
   }
   return { init, regionFrom, show, run, cancel };
 })();

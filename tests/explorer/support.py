@@ -5,6 +5,7 @@ HEALPix pixels from healpy, maps from h5py. A missing tool is a skip (exit 77), 
 CI (ARNOLDWEB_REQUIRE_CHECKS=1)."""
 import argparse
 import os
+import shutil
 import subprocess
 import sys
 import time
@@ -42,6 +43,15 @@ def arguments():
     p.add_argument("--work", required=True, help="a scratch directory (emptied)")
     p.add_argument("--artifacts", required=True, help="where screenshots go")
     return p.parse_args()
+
+
+def start():
+    """The test's arguments, its scratch directory emptied, and its checks."""
+    args = arguments()
+    shutil.rmtree(args.work, ignore_errors=True)
+    os.makedirs(args.work)
+    os.makedirs(args.artifacts, exist_ok=True)
+    return args, Checks()
 
 
 def arnoldweb(args, *words, check=True, **kw):
@@ -113,7 +123,7 @@ def canvas_box(d, index=0):
 
 def hover(d, x, y):
     """Moves the mouse to viewport position (x, y) (integers) and returns the readout."""
-    b = ActionBuilder(d)
+    b = ActionBuilder(d, duration=0)
     b.pointer_action.move_to_location(int(x), int(y))
     b.perform()
     return d.execute_script("""
@@ -136,7 +146,7 @@ def hover_many(d, points):
 
 
 def click(d, x, y):
-    b = ActionBuilder(d)
+    b = ActionBuilder(d, duration=0)
     b.pointer_action.move_to_location(int(x), int(y))
     b.pointer_action.click()
     b.perform()

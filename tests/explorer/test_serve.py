@@ -11,7 +11,6 @@ import glob
 import http.client
 import json
 import os
-import shutil
 import signal
 import socket
 import subprocess
@@ -22,11 +21,7 @@ sys.path.insert(0, os.path.dirname(__file__))
 import support as S  # noqa: E402
 from support import np, healpy  # noqa: E402
 
-args = S.arguments()
-shutil.rmtree(args.work, ignore_errors=True)
-os.makedirs(args.work)
-os.makedirs(args.artifacts, exist_ok=True)
-check = S.Checks()
+args, check = S.start()
 run_a = S.small_run(args, os.path.join(args.work, "runs", "a"))
 secret = os.path.join(args.work, "secret.txt")
 open(secret, "w").write("not for the server")
@@ -283,6 +278,9 @@ try:
         d.get(f"http://127.0.0.1:{port}/")
         t0 = time.time()
         while time.time() - t0 < 300:
+            shown = d.execute_script("const e = document.getElementById('errors'); return e ? e.textContent : ''")
+            if not check(not shown, f"the page waits for the scene's run without an error: {shown}"):
+                break
             if d.execute_script("return document.body && document.body.dataset.ready") == "1" and \
                d.execute_script("return AW.app.panels.length") == 1:
                 break

@@ -8,18 +8,13 @@ go to the artifacts directory (docs/viewer.md uses them)."""
 import base64
 import os
 import re
-import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
 import support as S  # noqa: E402
 from support import np, healpy  # noqa: E402
 
-args = S.arguments()
-shutil.rmtree(args.work, ignore_errors=True)
-os.makedirs(args.work)
-os.makedirs(args.artifacts, exist_ok=True)
-check = S.Checks()
+args, check = S.start()
 
 run_a = S.small_run(args, os.path.join(args.work, "a"))
 run_b = S.small_run(args, os.path.join(args.work, "b"), extra=("--set", "ensemble.seed=2"))
@@ -153,6 +148,52 @@ try:
     errors = S.console_errors(d)
     check(not errors, f"no console error: {errors}")
     d.save_screenshot(os.path.join(args.artifacts, "view_compare.png"))
+finally:
+    d.quit()
+
+# ---------------------------------------------------------------- a grid run's outputs, linked
+grid = os.path.join(args.work, "grid")
+S.arnoldweb(args, "run", os.path.join(args.source, "scenes", "fgl_frequency_map.toml"), "--device", "cpu", "-q",
+            "--out", grid, "--set", "ensemble.grid.resolution=[16,12]", "--set", "observe.frequencies.samples=64",
+            "--set", "run.average=20.48", "--set", "run.duration=20.48", "--set", "observe.velocity_map={nside=16}")
+S.arnoldweb(args, "view", grid)
+with S.h5py.File(os.path.join(grid, "indicators.h5"), "r") as f:
+    fli = f["fli"][()]
+with S.h5py.File(os.path.join(grid, "frequencies.h5"), "r") as f:
+    dindex = f["diffusion_index"][()]
+d = S.browser(1200, 900)
+try:
+    S.open_page(d, "file://" + os.path.join(args.work, "grid.view", "view.html") + "#model=1&circles=1")
+    names = d.execute_script("return [...document.querySelectorAll('canvas.field')].map((c) => c.dataset.field)")
+    check(names == ["diffusion_index", "fli", "frequency map"], f"the grid run's outputs are shown: {names}")
+    check(d.execute_script("return !document.getElementById('model-label').hidden"), "the model's resonances can be chosen (fgl)")
+    svg = d.execute_script("return AW.app.overlaySVG()")
+    drawn = set(re.findall(r'data-m="([-0-9,]+)"', svg))
+    # fgl: its 13 unit harmonics (docs/models.md), as map_resonances.png draws them
+    check(len(drawn) == 13 and all(max(abs(int(t)) for t in m.split(",")) == 1 for m in drawn),
+          f"with the model's resonances the overlay draws the model's circles, not all 49: {sorted(drawn)}")
+    box = d.execute_script("""const c = document.querySelector('canvas.field[data-field="fli"]');
+                               c.scrollIntoView({block: "center"}); const r = c.getBoundingClientRect();
+                               return [r.left, r.top, r.width, r.height, c.width, c.height]""")
+    n2, n1 = fli.shape
+    for col, row in ((3, 4), (10, 0), (15, 11)):
+        # the centre of cell (col, row); rows go up from the bottom, as the grid's second axis
+        x = box[0] + (col + 0.5) * box[2] / n1
+        y = box[1] + box[3] - (row + 0.5) * box[3] / n2
+        b = S.ActionBuilder(d, duration=0)
+        b.pointer_action.move_to_location(int(x), int(y))
+        b.perform()
+        text = d.execute_script("return document.getElementById('field-readout').textContent")
+        i = row * n1 + col
+        m = re.search(r"trajectory (\d+) · diffusion_index: (\S+) · fli: (\S+)", text)
+        check(m and int(m.group(1)) == i, f"cell ({col}, {row}) is trajectory {i}: {text}")
+        if m:
+            check(abs(float(m.group(3)) - fli.flat[i]) < 1e-5 * abs(fli.flat[i]), f"its FLI is indicators.h5's {fli.flat[i]}: {text}")
+            check(abs(float(m.group(2)) - dindex.flat[i]) < 1e-5 * abs(dindex.flat[i]),
+                  f"and the linked diffusion index frequencies.h5's {dindex.flat[i]}: {text}")
+    errors = S.console_errors(d)
+    check(not errors, f"no console error: {errors}")
+    d.save_screenshot(os.path.join(args.artifacts, "view_grid.png"))
 finally:
     d.quit()
 check.finish("explorer.view")
