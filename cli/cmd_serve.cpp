@@ -36,7 +36,7 @@ int serve(ServeArgs a) {
   const int rc = explorer::serve(o, signals.flag(), [](const std::string& url) {
     std::cout << "serving      " << url << "  (Ctrl-C stops)" << std::endl;
   });
-  return rc == 0 ? 0 : rc;
+  return rc;  // 130 when a running zoom was checkpointed
 }
 
 }  // namespace
@@ -46,7 +46,7 @@ void add_serve_command(CLI::App& app, Action& action) {
   explorer::ServeOptions& o = args->options;
   auto* c = app.add_subcommand("serve", "Serve the explorer for saved runs or a scene it runs first; zooms on demand "
                                         "(docs/viewer.md)");
-  c->add_option("what", args->what, "Output directories of runs, or one scene file (.toml) to run first")->required();
+  c->add_option("runs_or_scene", args->what, "Output directories of runs, or one scene file (.toml) to run first")->required();
   c->add_option("--port,-p", o.port, "Port (0: any free one)")->capture_default_str()->check(CLI::Range(0, 65535));
   c->add_option("--host", o.host, "Address to listen on (anything but the loopback address is warned about)")
       ->capture_default_str();

@@ -26,7 +26,7 @@ int view(const ViewArgs& a) {
 void add_view_command(CLI::App& app, Action& action) {
   auto args = std::make_shared<ViewArgs>();
   auto* c = app.add_subcommand("view", "Write an explorer page of saved runs that opens from file:// (docs/viewer.md)");
-  c->add_option("dirs", args->dirs, "Output directories of runs; two of one resolution are also compared")
+  c->add_option("runs", args->dirs, "Output directories of runs; two of one resolution are also compared")
       ->required();
   c->add_option("--to", args->to, "Where to write view.html and its data (default: <first OUT>.view)");
   c->callback([&action, args] { action = [args] { return view(*args); }; });

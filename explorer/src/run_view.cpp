@@ -1,6 +1,7 @@
 #include "run_view.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 

@@ -10,7 +10,6 @@
 #include <iostream>
 #include <map>
 #include <mutex>
-#include <regex>
 #include <thread>
 
 #include "arnoldweb/errors.hpp"

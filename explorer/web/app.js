@@ -453,7 +453,6 @@ AW.app = (function () {
   return {
     state, panels, regions, redraw, changed, error, viewPNG, overlaySVG, setLayer, resonanceList, fmt,
     startRegion: (tool) => { regionTool = tool; for (const p of panels) p.map.style.cursor = "crosshair"; },
-    stats: () => ({ frames, firstFrameMs }),
-    runs: () => runs,
+    stats: () => ({ frames, firstFrameMs }),  // for bench/explorer/viewer.py
   };
 })();

@@ -156,5 +156,5 @@ AW.fields = (function () {
     const fv = views.find((x) => x.kind === "field" && x.f.grid === "healpix");
     if (fv) mark(AW.geo.vec2pix(fv.f.nside, u), "map");
   }
-  return { init, markDirection, mark, count: () => views.length };
+  return { init, markDirection, count: () => views.length };
 })();

@@ -141,5 +141,5 @@ AW.zoom = (function () {
     list();
     return false;
   }
-  return { init, regionFrom, show, run, cancel };
+  return { init, show };
 })();
