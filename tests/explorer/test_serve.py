@@ -11,6 +11,7 @@ import glob
 import http.client
 import json
 import os
+import re
 import signal
 import socket
 import subprocess
@@ -106,6 +107,7 @@ try:
                 pix = int(healpy.vec2pix(nside, *v))
                 check(ro["value"] == str(int(counts[pix])), f"served page at ({x}, {y}): {ro} vs pixel {pix} = {counts[pix]}")
         d.save_screenshot(os.path.join(args.artifacts, "serve.png"))
+        print("served page: 20 points agree with map.h5", flush=True)
 
         # ------------------------------------------------------------ a zoom through the page
         d.execute_script("AW.zoom.show({kind: 'cap', center: [45, 8], radius: 4}); document.getElementById('zoom-n').value = 20000;")
@@ -120,6 +122,20 @@ try:
         zid = d.execute_script("return document.body.dataset.zoom")
         S.set_view(d, lon=45, lat=8, zoom=6)
         d.save_screenshot(os.path.join(args.artifacts, "serve_zoom.png"))
+        # a cap selected by dragging on the map: its centre where the drag starts (after the zoom: a
+        # click right after such a drag missed the run button in chromedriver)
+        d.find_element("id", "select-region").click()
+        x0, y0 = int(left + w / 2 + 20), int(top + h / 2 + 40)
+        b = S.ActionBuilder(d, duration=0)
+        b.pointer_action.move_to_location(x0, y0).pointer_down().move_to_location(x0 + 30, y0).pointer_up()
+        b.perform()
+        text = d.execute_script("return document.getElementById('region-text').textContent")
+        v0 = S.direction_at("ortho", 45, 8, 6, w, h, np.floor(x0 - left) + 0.5, np.floor(y0 - top) + 0.5)
+        lon0, lat0 = np.degrees(np.arctan2(v0[1], v0[0])) % 360, np.degrees(np.arcsin(v0[2]))
+        m = re.search(r"cap at lon (\S+)°, lat (\S+)°, radius (\S+)°", text)
+        check(m and abs(float(m.group(1)) - lon0) < 1e-2 and abs(float(m.group(2)) - lat0) < 1e-2 and
+              0.01 < float(m.group(3)) < 5, f"dragging selects a cap centred where it starts ({lon0:.3f}, {lat0:.3f}): {text}")
+        print("a cap selected by dragging:", text, flush=True)
         errors = S.console_errors(d)
         check(not errors, f"no console error after the zoom: {errors}")
     finally:
