@@ -4,6 +4,7 @@
 // was registered. Requests are bounded in size; a bad one is answered 4xx with a message and
 // changes nothing. Zooms run through RunQueue.
 #include <httplib.h>
+#include <sys/socket.h>
 
 #include <chrono>
 #include <filesystem>
@@ -240,9 +241,19 @@ int serve(const ServeOptions& o, const std::atomic<bool>& stop, const std::funct
     }
   });
 
+  // cpp-httplib listens with a backlog of 5, so a burst of connections beyond the accepting
+  // thread's pace was dropped and retried by the clients' TCP after seconds: the socket is kept
+  // here and listened on again with the system's largest backlog once bound
+  socket_t listening = -1;
+  svr.set_socket_options([&listening](socket_t fd) {
+    int yes = 1;
+    ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);  // cpp-httplib's default, which this replaces
+    listening = fd;
+  });
   const int port = o.port == 0 ? svr.bind_to_any_port(o.host) : svr.bind_to_port(o.host, o.port) ? o.port : -1;
   if (port < 0)
     throw OutputError(o.host + ":" + std::to_string(o.port), "cannot listen there (in use, or not an address of this machine)");
+  if (listening >= 0) ::listen(listening, SOMAXCONN);
   std::thread listener([&svr] { svr.listen_after_bind(); });
   while (!svr.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   if (ready) ready("http://" + (o.host.find(':') != std::string::npos ? "[" + o.host + "]" : o.host) + ":" +

@@ -37,7 +37,7 @@ AW.fields = (function () {
                                                            f.y[0] + (Math.floor(i / n1) + 0.5) * (f.y[1] - f.y[0]) / n2) : null),
     };
   }
-  // a pixel's centre, by search over its neighbourhood (the page needs it only for marks)
+  // the unit vector to a RING pixel's centre (for marks)
   function pixCentre(nside, pix) {
     const npix = 12 * nside * nside;
     if (pix < 0 || pix >= npix) return null;
