@@ -519,7 +519,8 @@ def adapt(text: str, element: Element, rules: dict, full: bool, present: set[str
             call = None
         head, tail = [], []  # shell words, quoted: after the subcommand, and at the end
         option = "--scene-set" if call and call[0] == "bench" else "--set"
-        if call and not full and (call[0] in {"run", "accuracy"} or (call[0] == "bench" and call[1])):
+        if call and not full and (call[0] in {"run", "accuracy"} or (call[0] in {"bench", "serve"} and
+                                                                     call[1].endswith(".toml"))):
             sizes = rules.get("sizes", {}).get(call[1])
             if sizes is None:
                 raise DocError(f"{element.where}: tests/docs/rules.toml has no CI size for {call[1]!r} "
@@ -579,7 +580,8 @@ def plan_element(element: Element, rules: dict, full: bool, present: set[str]) -
                     break
         program = program_of(text) if not element.python_code else "python"
         bare = re.sub(r"^(\s*[A-Za-z_][A-Za-z0-9_]*=\S*\s+(\\\s+)?)+", "", text)
-        rule = next((r for r in rules.get("programs", []) if re.match(r["match"], bare)), None)
+        rule = next((r for r in rules.get("programs", [])
+                     if re.search(r["match"], bare) or re.search(r["match"], text)), None)
         if skip is None and rule and rule.get("skip"):
             skip = "skip: " + rule["skip"]
         if skip is None and rule and rule.get("ci"):
