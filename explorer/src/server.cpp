@@ -1,12 +1,10 @@
 // arnoldweb serve: the explorer's page and the runs it was given, over HTTP (the transport is
-// http_server.hpp, on Boost.Beast). The server knows runs, not paths: a page names a run by its
-// id, and every answer comes from the embedded page files or from a run read through the
-// library's checked readers when it was registered. Requests are bounded in size; a bad one is
-// answered 4xx with a message and changes nothing. Zooms run through RunQueue.
-#include <algorithm>
+// http_server.hpp, on Boost.Beast; the routing router.hpp). The server knows runs, not paths: a
+// page names a run by its id, and every answer comes from the embedded page files or from a run
+// read through the library's checked readers when it was registered. Requests are bounded in
+// size; a bad one is answered 4xx with a message and changes nothing. Zooms run through RunQueue.
 #include <chrono>
 #include <filesystem>
-#include <functional>
 #include <iostream>
 #include <map>
 #include <mutex>
@@ -15,6 +13,7 @@
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/explorer.hpp"
 #include "http_server.hpp"
+#include "router.hpp"
 #include "run_queue.hpp"
 #include "run_view.hpp"
 #include "web_files.hpp"
@@ -51,71 +50,6 @@ class Runs {
   mutable std::mutex mutex_;
   std::vector<std::string> order_;
   std::map<std::string, std::shared_ptr<const RunView>> by_id_;
-};
-
-// What a request's target may quote back in an answer.
-std::string shown(const std::string& text) { return text.size() <= 100 ? text : text.substr(0, 100) + "..."; }
-
-// The API by method and path. A pattern's segments are literal, ":id" (a run's or a zoom's id,
-// [a-z][0-9]{1,6}) or ":name" (any one segment: a page file's name, looked up exactly). The
-// target is matched as sent, not decoded: no name the server knows has a '%', '.' segment or '/'.
-class Router {
- public:
-  using Args = std::vector<std::string>;  // what the pattern's ":" segments matched
-  using Answer = std::function<HttpAnswer(const Args&, const HttpRequest&)>;
-
-  void get(const std::string& pattern, Answer a) { routes_.push_back({"GET", split(pattern), std::move(a)}); }
-  void post(const std::string& pattern, Answer a) { routes_.push_back({"POST", split(pattern), std::move(a)}); }
-
-  HttpAnswer operator()(const HttpRequest& req) const {
-    if (req.method != "GET" && req.method != "HEAD" && req.method != "POST")
-      return refusal(405, "method " + shown(req.method) + " is not served (GET, HEAD and POST only)");
-    if (req.target.find('?') != std::string::npos)  // everything a page asks is in the path or the body
-      return refusal(400, "this server takes no query parameters");
-    if (req.target.empty() || req.target[0] != '/') return refusal(404, "no such page or run: " + shown(req.target));
-    const std::vector<std::string> segments = split(req.target);
-    const std::string method = req.method == "HEAD" ? "GET" : req.method;
-    bool other_method = false;
-    for (const auto& r : routes_) {
-      Args args;
-      if (!matches(r.pattern, segments, &args)) continue;
-      if (r.method == method) return r.answer(args, req);
-      other_method = true;
-    }
-    if (other_method) return refusal(405, req.method + " is not served at " + shown(req.target));
-    return refusal(404, "no such page or run: " + shown(req.target));
-  }
-
- private:
-  struct Route {
-    std::string method;
-    std::vector<std::string> pattern;
-    Answer answer;
-  };
-  // "/api/runs/r0" -> {api, runs, r0}; "/" -> {""}
-  static std::vector<std::string> split(const std::string& path) {
-    std::vector<std::string> out;
-    std::size_t from = 1;
-    for (std::size_t slash; (slash = path.find('/', from)) != std::string::npos; from = slash + 1)
-      out.push_back(path.substr(from, slash - from));
-    out.push_back(path.substr(from));
-    return out;
-  }
-  static bool is_id(const std::string& s) {
-    if (s.size() < 2 || s.size() > 7 || s[0] < 'a' || s[0] > 'z') return false;
-    return std::all_of(s.begin() + 1, s.end(), [](char c) { return c >= '0' && c <= '9'; });
-  }
-  static bool matches(const std::vector<std::string>& pattern, const std::vector<std::string>& segments, Args* args) {
-    if (pattern.size() != segments.size()) return false;
-    for (std::size_t i = 0; i < pattern.size(); ++i) {
-      if (pattern[i] == ":name" || (pattern[i] == ":id" && is_id(segments[i])))
-        args->push_back(segments[i]);
-      else if (pattern[i] != segments[i])
-        return false;
-    }
-    return true;
-  }
-  std::vector<Route> routes_;
 };
 
 std::string first_free(const fs::path& root, const std::string& stem, int* counter) {
