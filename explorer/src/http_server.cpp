@@ -228,7 +228,7 @@ int HttpServer::port() const { return state_->acceptor.local_endpoint().port(); 
 void HttpServer::start() {
   state_->accept();
   unsigned n = state_->limits.threads;
-  if (n == 0) n = std::clamp(std::thread::hardware_concurrency(), 4u, 16u);
+  if (n == 0) n = std::clamp(std::thread::hardware_concurrency(), 8u, 16u);
   for (unsigned i = 0; i < n; ++i)
     state_->threads.emplace_back([s = state_.get()] {
       for (;;) {

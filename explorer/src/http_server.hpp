@@ -46,7 +46,7 @@ struct HttpLimits {
   std::chrono::seconds answer_stall{30};     // without progress while an answer is taken
   std::chrono::seconds linger{2};            // after a refusal, to let the client finish sending and read it
   std::size_t max_connections = 256;         // open at once; further ones are closed at once
-  unsigned threads = 0;                      // 0: max(4, cores), at most 16
+  unsigned threads = 0;                      // 0: max(8, cores), at most 16 (handlers may block)
 };
 
 class HttpServer {
