@@ -3,7 +3,8 @@
 // compare` and `arnoldweb render`), for arnoldweb.load(). The map's digest is
 // computed here as summary.json's is, so the package can check the file; every
 // other file (summary.json, states.h5, indicators.h5) comes through the same
-// checked reader (read_saved_summary, read_saved_file).
+// checked reader (read_saved_summary, read_saved_file; HDF5 files also
+// through the HDF5 reader's policy: read_saved_hdf5_file).
 #include "bindings.hpp"
 
 #include <nanobind/stl/string.h>
@@ -95,6 +96,19 @@ void bind_saved(nb::module_& m) {
       nb::arg("dir"), nb::arg("duration"),
       "What continuing the finished run in dir starts from: its scene as it ran and the overrides "
       "that start it from its checked states.h5 (arnoldweb::continuation_of).");
+  m.def(
+      "_read_saved_hdf5_file",
+      [](const std::string& dir, const std::string& name) {
+        std::string bytes;
+        {
+          nb::gil_scoped_release unlocked;
+          bytes = arnoldweb::read_saved_hdf5_file(dir, name);
+        }
+        return nb::bytes(bytes.data(), bytes.size());
+      },
+      nb::arg("dir"), nb::arg("name"),
+      "The bytes of an HDF5 file of an output directory, checked as _read_saved_file checks them "
+      "and by the HDF5 reader's policy (nothing leads out of the file; OutputError otherwise).");
   m.def("_read_maps", &read_maps, nb::arg("dir"),
         "The maps of an output directory (summary.json, map.h5): nside, map, frames, zoom and the "
         "map's digest as summary.json computes it. Raises OutputError naming a missing or bad file.");

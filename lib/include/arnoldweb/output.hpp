@@ -201,6 +201,12 @@ std::string read_saved_summary(const std::string& dir);
 // directory without digests: read unchecked). SavedRunError otherwise.
 std::string read_saved_file(const std::string& dir, const std::string& name);
 
+// The same for an HDF5 file of the directory (states.h5, indicators.h5,
+// ...), whose bytes are then also checked by the HDF5 reader's policy
+// (docs/reliability.md, "Reading HDF5 files": nothing that leads out of the
+// file, every dataset's data in it), for readers such as h5py.
+std::string read_saved_hdf5_file(const std::string& dir, const std::string& name);
+
 // What continuing the finished run in `dir` starts from (`arnoldweb continue`,
 // Python's continue_run): the run's scene as it ran (summary.json's
 // scene_toml) and the overrides, in order, that start its trajectories from
