@@ -83,8 +83,13 @@ void bind_saved(nb::module_& m) {
       "records (OutputError naming it otherwise).");
   m.def(
       "_continuation_of",
-      [](const std::string& dir, double duration) {
-        const arnoldweb::Continuation c = arnoldweb::continuation_of(dir, duration);
+      [](const std::string& dir, double duration, const std::vector<std::string>& sets,
+         const std::vector<std::string>& labels) {
+        arnoldweb::ContinueArgs args;
+        args.duration = duration;
+        args.sets = sets;
+        args.set_labels = labels;
+        const arnoldweb::Continuation c = arnoldweb::continuation_of(dir, args);
         nb::dict d;
         d["scene_toml"] = c.scene_toml;
         d["source"] = c.source;
@@ -93,9 +98,10 @@ void bind_saved(nb::module_& m) {
         d["labels"] = c.labels;
         return d;
       },
-      nb::arg("dir"), nb::arg("duration"),
+      nb::arg("dir"), nb::arg("duration"), nb::arg("sets"), nb::arg("labels"),
       "What continuing the finished run in dir starts from: its scene as it ran and the overrides "
-      "that start it from its checked states.h5 (arnoldweb::continuation_of).");
+      "that start it from its checked states.h5, then `sets` (keys that leave the trajectories "
+      "unchanged; SceneError otherwise) (arnoldweb::continuation_of).");
   m.def(
       "_read_saved_hdf5_file",
       [](const std::string& dir, const std::string& name) {

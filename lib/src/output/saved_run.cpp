@@ -7,7 +7,6 @@
 
 #include <cerrno>
 #include <filesystem>
-#include <sstream>
 
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/output.hpp"
@@ -380,26 +379,6 @@ std::string read_saved_hdf5_file(const std::string& dir, const std::string& name
   const std::string path = saved.path(name);
   const detail::H5File checked(bytes, path, saved_run_error(path));  // the reader's policy, on these bytes
   return bytes;
-}
-
-Continuation continuation_of(const std::string& dir, double duration) {
-  const detail::SavedDir saved(dir);
-  Continuation c;
-  c.source = saved.summary_path();
-  c.scene_toml = saved.text("/scene_toml");
-  const nlohmann::json& time = saved.summary().value("time", nlohmann::json::object());
-  if (time.is_object() && time.contains("end") && time["end"].is_number()) c.end_time = time["end"].get<double>();
-  const std::string states = saved.path("states.h5");
-  if (!std::filesystem::exists(states))
-    throw SavedRunError(states, "the run kept no final states to continue from: run it with "
-                                "observe.final_states = true");
-  saved.read("states.h5");  // checked against its size and digest in summary.json
-  std::ostringstream d;
-  d.precision(15);
-  d << duration;
-  c.overrides = {"ensemble.initial=\"file\"", "ensemble.file=" + states, "run.duration=" + d.str()};
-  c.labels = {"continue " + dir, "continue " + dir, "continue for " + d.str() + " T"};
-  return c;
 }
 
 }  // namespace arnoldweb
