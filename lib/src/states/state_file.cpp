@@ -155,9 +155,9 @@ void check_file(const std::string& path, const detail::OpenPlainFile& plain) {
   if (plain.error() == ENOENT) throw StateError(path, "", -1, "no such file (ensemble.file names an HDF5 file of states)");
   // a FIFO, a device or a file of /proc is refused before HDF5 opens it (and blocks)
   if (!plain.why().empty()) throw StateError(path, "", -1, plain.why());
+  detail::check_run_file(path, plain);  // a run's file that was changed says so, whatever it holds now
   if (H5Fis_hdf5(plain.name().c_str()) <= 0)
     throw StateError(path, "", -1, "not an HDF5 file (docs/outputs.md, \"State files\")");
-  detail::check_run_file(path, plain);
 }
 
 }  // namespace
