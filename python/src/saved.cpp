@@ -44,6 +44,17 @@ nb::dict read_maps(const std::string& dir) {
   return d;
 }
 
+// The bytes of a file of an output directory as `read` gives them, read without the GIL.
+nb::bytes saved_bytes(std::string (*read)(const std::string&, const std::string&), const std::string& dir,
+                      const std::string& name) {
+  std::string bytes;
+  {
+    nb::gil_scoped_release unlocked;
+    bytes = read(dir, name);
+  }
+  return nb::bytes(bytes.data(), bytes.size());
+}
+
 }  // namespace
 
 void bind_saved(nb::module_& m) {
@@ -70,14 +81,7 @@ void bind_saved(nb::module_& m) {
       "(a plain file, a JSON object of the right form; OutputError otherwise).");
   m.def(
       "_read_saved_file",
-      [](const std::string& dir, const std::string& name) {
-        std::string bytes;
-        {
-          nb::gil_scoped_release unlocked;
-          bytes = arnoldweb::read_saved_file(dir, name);
-        }
-        return nb::bytes(bytes.data(), bytes.size());
-      },
+      [](const std::string& dir, const std::string& name) { return saved_bytes(arnoldweb::read_saved_file, dir, name); },
       nb::arg("dir"), nb::arg("name"),
       "The bytes of a file of an output directory, checked against the size and digest summary.json "
       "records (OutputError naming it otherwise).");
@@ -105,12 +109,7 @@ void bind_saved(nb::module_& m) {
   m.def(
       "_read_saved_hdf5_file",
       [](const std::string& dir, const std::string& name) {
-        std::string bytes;
-        {
-          nb::gil_scoped_release unlocked;
-          bytes = arnoldweb::read_saved_hdf5_file(dir, name);
-        }
-        return nb::bytes(bytes.data(), bytes.size());
+        return saved_bytes(arnoldweb::read_saved_hdf5_file, dir, name);
       },
       nb::arg("dir"), nb::arg("name"),
       "The bytes of an HDF5 file of an output directory, checked as _read_saved_file checks them "
