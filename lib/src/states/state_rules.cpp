@@ -9,7 +9,7 @@ namespace arnoldweb::detail {
 namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925;
-constexpr std::int64_t kMaxStateWinding = 4503599627370496;  // kMaxStateTurns, 2^52
+constexpr auto kMaxStateWinding = static_cast<std::int64_t>(kMaxStateTurns);  // 2^52
 
 bool finite3(const double* v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
