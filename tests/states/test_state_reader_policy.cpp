@@ -106,12 +106,12 @@ TEST_SUITE("states") {
            f.reals("position_turns", s.x);
            f.virtual_dataset("momentum", 8, fifo, true);
          }},
-        // a link that leads out is refused wherever it is, read or not
-        {"external-beside", "/notes: is an external link",
+        // a soft link to an external one is the external link
+        {"soft-to-external", "/elsewhere: is an external link to " + fifo + ":/momentum",
          [&](awtest::H5TestFile& f) {
            f.reals("position_turns", s.x);
-           f.reals("momentum", s.p);
-           f.external_link("notes", fifo);
+           f.external_link("elsewhere", fifo);
+           REQUIRE(H5Lcreate_soft("/elsewhere", f.id(), "momentum", H5P_DEFAULT, H5P_DEFAULT) >= 0);
          }},
     };
     for (const Case& c : cases) {
@@ -131,6 +131,29 @@ TEST_SUITE("states") {
       CHECK(e.exit_code() == 2);
       CHECK(contains(e.what(), c.says));
     }
+    // a link that leads out but is not on the way to what is read is never followed: the states are read
+    const std::string beside = dir + "/external-beside.h5";
+    {
+      awtest::H5TestFile f(beside);
+      f.reals("position_turns", s.x);
+      f.reals("momentum", s.p);
+      f.external_link("notes", fifo);
+    }
+    std::string out;
+    CHECK(check_within(dir, beside, 60, &out) == 0);
+    CHECK(read_state_file(beside).count == 8);
+  }
+
+  TEST_CASE("1. a damaged global heap, on which HDF5 1.10.8 loops for ever, is refused before HDF5 reads it") {
+    // the fuzzer's reproducer (a free-space object of size 0); `check` blocked on it before
+    const std::string dir = awtest::temp_dir("states-heap");
+    const std::string path = dir + "/heap.h5";
+    fs::copy_file(std::string(ARNOLDWEB_SOURCE_DIR) + "/tests/fuzz/hdf5-defects/global-heap-size-0", path);
+    std::string out;
+    CHECK(check_within(dir, path, 60, &out) == 2);
+    CAPTURE(out);
+    CHECK(contains(out, path + ": holds a global heap collection at byte 2056 whose object 0 has a size (0) on which "
+                               "HDF5 1.10.8 loops for ever (a damaged file)"));
   }
 
   TEST_CASE("2. every dataset's row count is compared with the others, before anything is read") {

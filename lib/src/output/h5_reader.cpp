@@ -1,6 +1,11 @@
 // arnoldweb: opening HDF5 files for reading under one policy (h5_reader.hpp).
 #include "output/h5_reader.hpp"
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 #include <vector>
@@ -11,12 +16,16 @@ namespace {
 constexpr std::size_t kMaxLinks = 100000;            // arnoldweb's files hold a few dozen
 constexpr std::size_t kMaxAttributeBytes = 1u << 20;  // a units string, a nside
 
+constexpr int kMaxSoftLinks = 16;                    // hops from one name to its object
+
 #if H5_VERSION_GE(1, 12, 0)
 using LinkInfo = H5L_info2_t;
 #define AW_H5LVISIT H5Lvisit2
+#define AW_H5LGET_INFO H5Lget_info2
 #else
 using LinkInfo = H5L_info_t;
 #define AW_H5LVISIT H5Lvisit
+#define AW_H5LGET_INFO H5Lget_info
 #endif
 
 // External links are never followed (the walk refuses them first; this
@@ -44,6 +53,14 @@ std::string filter_name(hid_t dcpl, unsigned k, H5Z_filter_t& id) {
   char name[64] = {0};
   id = H5Pget_filter2(dcpl, k, &flags, &n, values, sizeof name, name, &config);
   return name[0] ? std::string(name) : "id " + std::to_string(static_cast<long>(id));
+}
+
+// A count that may exceed 64 bits: "402653184", "3.4e+38".
+std::string show_count(long double n) {
+  if (n < 1.8e19L) return std::to_string(static_cast<unsigned long long>(n));
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3Lg", n);
+  return text;
 }
 
 // Why the dataset `d` may not be read, or "" (a file of `file_bytes`).
@@ -82,9 +99,8 @@ std::string dataset_problem(hid_t d, std::uint64_t file_bytes) {
   if (points == 0) return "";
   const long double declared = static_cast<long double>(points) * static_cast<long double>(value_bytes);
   const std::uint64_t stored = H5Dget_storage_size(d);
-  const std::string sizes = "declares " + std::to_string(points) + " values (" +
-                            std::to_string(static_cast<unsigned long long>(declared)) + " bytes) and stores " +
-                            std::to_string(stored) + " bytes";
+  const std::string sizes = "declares " + std::to_string(points) + " values (" + show_count(declared) +
+                            " bytes) and stores " + std::to_string(stored) + " bytes";
   if (stored > file_bytes) return sizes + " in a file of " + std::to_string(file_bytes) + " bytes (a damaged file)";
   if (layout == H5D_CHUNKED) {
     const int rank = H5Sget_simple_extent_ndims(space.id);
@@ -101,8 +117,7 @@ std::string dataset_problem(hid_t d, std::uint64_t file_bytes) {
     hsize_t written = 0;
     if (H5Dget_num_chunks(d, space.id, &written) < 0) return "has a chunk index that cannot be read (a damaged file?)";
     if (static_cast<long double>(written) < chunks)
-      return sizes + " in " + std::to_string(written) + " of its " +
-             std::to_string(static_cast<unsigned long long>(chunks)) +
+      return sizes + " in " + std::to_string(written) + " of its " + show_count(chunks) +
              " chunks: the others were never written (HDF5 would give fill values in their place)";
 #endif
   }
@@ -120,6 +135,14 @@ struct Walk {
   std::size_t links = 0;
   std::string object, problem;
 };
+
+// Why a link of `type` (not hard, not soft) may not be followed.
+std::string link_leads_out(H5L_type_t type, hid_t group, const char* name, std::size_t value_size) {
+  const std::string what = type == H5L_TYPE_EXTERNAL
+                               ? "is an external link" + external_link_target(group, name, value_size)
+                               : std::string("is a user-defined link");
+  return what + ": arnoldweb reads only what is stored in the file itself" + kWhy;
+}
 
 herr_t visit_link(hid_t group, const char* name, const LinkInfo* info, void* data) {
   Walk& w = *static_cast<Walk*>(data);
@@ -141,12 +164,8 @@ herr_t visit_link(hid_t group, const char* name, const LinkInfo* info, void* dat
     }
     case H5L_TYPE_SOFT:
       return 0;  // a path inside this file, where no link leads out (this walk)
-    case H5L_TYPE_EXTERNAL:
-      w.problem = "is an external link" + external_link_target(group, name, info->u.val_size) +
-                  ": arnoldweb reads only what is stored in the file itself" + kWhy;
-      return 1;
     default:
-      w.problem = std::string("is a user-defined link: arnoldweb reads only what is stored in the file itself") + kWhy;
+      w.problem = link_leads_out(info->type, group, name, info->u.val_size);
       return 1;
   }
 }
@@ -162,12 +181,29 @@ std::string show_shape(const std::vector<hsize_t>& dims) {
 H5File::H5File(const OpenPlainFile& file, const std::string& path, H5Fail fail)
     : path_(path), fail_(std::move(fail)), file_bytes_(file.size()) {
   if (!file.why().empty()) this->fail("", file.why());
+  const int fd = file.fd();
+  const std::uint64_t size = file_bytes_;
+  guard_heaps([fd, size](std::uint64_t offset, std::size_t n) {
+    std::string b(offset < size ? static_cast<std::size_t>(std::min<std::uint64_t>(n, size - offset)) : 0, '\0');
+    std::size_t got = 0;
+    while (got < b.size()) {
+      const ssize_t r = ::pread(fd, b.data() + got, b.size() - got, static_cast<off_t>(offset + got));
+      if (r < 0 && errno == EINTR) continue;
+      if (r <= 0) break;
+      got += static_cast<std::size_t>(r);
+    }
+    b.resize(got);
+    return b;
+  });
   const H5Handle fapl{H5Pcreate(H5P_FILE_ACCESS), H5Pclose};
   open(file.name(), fapl.id);
 }
 
 H5File::H5File(std::string& bytes, const std::string& path, H5Fail fail)
     : path_(path), fail_(std::move(fail)), file_bytes_(bytes.size()) {
+  guard_heaps([&bytes](std::uint64_t offset, std::size_t n) {
+    return offset < bytes.size() ? bytes.substr(static_cast<std::size_t>(offset), n) : std::string();
+  });
   const H5Handle fapl{H5Pcreate(H5P_FILE_ACCESS), H5Pclose};
   if (fapl.id < 0 || H5Pset_fapl_core(fapl.id, 1 << 20, 0) < 0 ||
       H5Pset_file_image(fapl.id, bytes.data(), bytes.size()) < 0)
@@ -185,7 +221,10 @@ void H5File::open(const std::string& name, hid_t fapl) {
     fail("", "HDF5 could not make its link access properties");
   file_.id = fapl < 0 ? -1 : H5Fopen(name.c_str(), H5F_ACC_RDONLY, fapl);
   if (file_.id < 0) fail("", "cannot be opened as an HDF5 file (it is none, or a damaged one)");
-  check_contents();
+}
+
+void H5File::guard_heaps(const ReadAt& read) const {
+  if (const std::string why = global_heap_problem(read, file_bytes_); !why.empty()) fail("", why);
 }
 
 void H5File::fail(const std::string& object, const std::string& message) const {
@@ -193,7 +232,7 @@ void H5File::fail(const std::string& object, const std::string& message) const {
   throw std::logic_error("H5Fail returned");  // the callers' fail throws
 }
 
-void H5File::check_contents() const {
+void H5File::check_every_link() const {
   Walk w;
   w.file_bytes = file_bytes_;
   w.lapl = lapl_.id;
@@ -202,23 +241,53 @@ void H5File::check_contents() const {
   if (visited < 0) fail("", "its groups cannot be read (a damaged file?)");
 }
 
-bool H5File::has(const std::string& path) const {
-  // each parent must exist before H5Lexists may be asked about a child
-  std::size_t at = 1;
-  for (;;) {
-    const std::size_t slash = path.find('/', at);
-    if (H5Lexists(file_.id, path.substr(0, slash).c_str(), lapl_.id) <= 0) return false;
-    if (slash == std::string::npos) return H5Oexists_by_name(file_.id, path.c_str(), lapl_.id) > 0;
-    at = slash + 1;
+std::string H5File::resolve(const std::string& path, int hops) const {
+  if (hops > kMaxSoftLinks) fail(path, "is reached through more than " + std::to_string(kMaxSoftLinks) + " soft links");
+  std::string at;  // the object reached so far, through hard links only ("": the root group)
+  for (std::size_t start = 0; start <= path.size();) {
+    const std::size_t slash = std::min(path.find('/', start), path.size());
+    const std::string part = path.substr(start, slash - start);
+    start = slash + 1;
+    if (part.empty() || part == ".") continue;
+    const std::string next = at + "/" + part;
+    LinkInfo info{};
+    // HDF5 follows no link here: every link on the way to `next` is a hard link already looked at
+    if (H5Lexists(file_.id, next.c_str(), lapl_.id) <= 0 ||
+        AW_H5LGET_INFO(file_.id, next.c_str(), &info, lapl_.id) < 0)
+      return "";
+    if (info.type == H5L_TYPE_HARD) {
+      at = next;
+    } else if (info.type == H5L_TYPE_SOFT) {
+      std::vector<char> target(info.u.val_size + 1, '\0');
+      if (info.u.val_size == 0 || info.u.val_size > (1u << 16) ||
+          H5Lget_val(file_.id, next.c_str(), target.data(), target.size(), lapl_.id) < 0)
+        return "";
+      const std::string to(target.data());
+      at = resolve(to[0] == '/' ? to : (at.empty() ? "/" : at) + "/" + to, hops + 1);
+      if (at.empty()) return "";
+      if (at == "/") at.clear();
+    } else {
+      fail(next, link_leads_out(info.type, file_.id, next.c_str(), info.u.val_size));
+    }
   }
+  return at.empty() ? "/" : at;
+}
+
+bool H5File::has(const std::string& path) const {
+  const std::string at = resolve(path, 0);
+  return !at.empty() && H5Oexists_by_name(file_.id, at.c_str(), lapl_.id) > 0;
 }
 
 H5Handle H5File::dataset(const std::string& path) const {
+  const std::string at = resolve(path, 0);
+  if (at.empty()) fail(path, "is missing");
   const H5Handle dapl{H5Pcreate(H5P_DATASET_ACCESS), H5Pclose};
   if (dapl.id < 0 || H5Pset_elink_cb(dapl.id, refuse_external_link, nullptr) < 0)
     fail(path, "cannot be opened (HDF5 could not make its access properties)");
-  H5Handle d{H5Dopen2(file_.id, path.c_str(), dapl.id), H5Dclose};
+  H5Handle d{H5Dopen2(file_.id, at.c_str(), dapl.id), H5Dclose};
   if (d.id < 0) fail(path, "cannot be opened as a dataset");
+  // before its shape is asked for: a virtual dataset's shape can open its sources
+  if (const std::string why = dataset_problem(d.id, file_bytes_); !why.empty()) fail(path, why);
   return d;
 }
 
@@ -233,7 +302,8 @@ std::vector<hsize_t> H5File::dims(hid_t dataset, const std::string& path) const 
 }
 
 bool H5File::has_attribute(const std::string& object, const char* name) const {
-  return H5Aexists_by_name(file_.id, object.c_str(), name, lapl_.id) > 0;
+  const std::string at = resolve(object, 0);
+  return !at.empty() && H5Aexists_by_name(file_.id, at.c_str(), name, lapl_.id) > 0;
 }
 
 namespace {
@@ -254,7 +324,7 @@ std::string describe(hid_t type) {
 
 std::string H5File::text_attribute(const std::string& object, const char* name) const {
   const std::string what = std::string("the attribute ") + name;
-  const H5Handle a{H5Aopen_by_name(file_.id, object.c_str(), name, H5P_DEFAULT, lapl_.id), H5Aclose};
+  const H5Handle a{H5Aopen_by_name(file_.id, resolve(object, 0).c_str(), name, H5P_DEFAULT, lapl_.id), H5Aclose};
   if (a.id < 0) fail(object, what + " cannot be opened (a damaged file?)");
   const H5Handle type{H5Aget_type(a.id), H5Tclose};
   const H5Handle space{H5Aget_space(a.id), H5Sclose};
@@ -291,7 +361,7 @@ std::string H5File::text_attribute(const std::string& object, const char* name) 
 
 double H5File::number_attribute(const std::string& object, const char* name) const {
   const std::string what = std::string("the attribute ") + name;
-  const H5Handle a{H5Aopen_by_name(file_.id, object.c_str(), name, H5P_DEFAULT, lapl_.id), H5Aclose};
+  const H5Handle a{H5Aopen_by_name(file_.id, resolve(object, 0).c_str(), name, H5P_DEFAULT, lapl_.id), H5Aclose};
   const H5Handle type{a.id < 0 ? -1 : H5Aget_type(a.id), H5Tclose};
   const H5Handle space{a.id < 0 ? -1 : H5Aget_space(a.id), H5Sclose};
   if (type.id < 0 || space.id < 0) fail(object, what + " cannot be opened (a damaged file?)");

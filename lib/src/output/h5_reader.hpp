@@ -4,12 +4,20 @@
 // Python's arnoldweb.load hands to h5py (read_saved_hdf5_file). The policy:
 //  - the file is a plain file (os/regular_file.hpp), opened through a name of
 //    the very file that was checked, or from bytes already read;
-//  - before anything else is read, every link and dataset of the file is
-//    visited, and HDF5 is never allowed out of the file: external links,
-//    user-defined links, external raw storage and virtual datasets are
-//    refused (they name other files, which may be FIFOs or devices: a read
-//    would block for ever), and so are filters beyond deflate, shuffle and
-//    fletcher32 (others load plugins); soft links stay inside the file;
+//  - HDF5 is never allowed out of the file: every link on the way to a name
+//    is looked at before the name is used (soft links are followed inside
+//    the file, by this reader), and every dataset before its shape or data
+//    is: external links, user-defined links, external raw storage and
+//    virtual datasets are refused (they name other files, which may be FIFOs
+//    or devices: a read would block for ever), and so are filters beyond
+//    deflate, shuffle and fletcher32 (others load plugins). Before HDF5
+//    opens the file, its global heaps are walked as HDF5 1.10.8 walks them
+//    (a damaged one made HDF5 loop for ever: h5_global_heaps.hpp). A file handed to
+//    another reader (h5py, which iterates groups) is first walked whole
+//    (check_every_link). arnoldweb's own readers look names up rather than
+//    iterate: HDF5 1.10.8 frees uninitialised entries of its link table when
+//    a compact group's link count is damaged (found by the fuzzer under ASan);
+//    a lookup builds no table;
 //  - every dataset's data must be stored in the file: its storage is not
 //    larger than the file, an unfiltered dataset's storage holds all its
 //    bytes and a chunked one has every chunk written (HDF5 would otherwise
@@ -29,6 +37,7 @@
 #include <vector>
 
 #include "os/regular_file.hpp"
+#include "output/h5_global_heaps.hpp"
 #include "output/hdf5_handle.hpp"
 
 namespace arnoldweb::detail {
@@ -50,9 +59,12 @@ class H5File {
   H5File& operator=(const H5File&) = delete;
 
   hid_t id() const { return file_.id; }
+  // Every link and dataset of the file by the policy (for a file that
+  // another reader iterates).
+  void check_every_link() const;
   // Whether `path` ("/final/momentum") names an object of the file.
   bool has(const std::string& path) const;
-  // The dataset at `path`, open (fail when it is none).
+  // The dataset at `path`, open and checked (fail when it is none).
   H5Handle dataset(const std::string& path) const;
   // Its dimensions (fail when it has no simple shape).
   std::vector<hsize_t> dims(hid_t dataset, const std::string& path) const;
@@ -67,7 +79,11 @@ class H5File {
 
  private:
   void open(const std::string& name, hid_t fapl);
-  void check_contents() const;
+  // fail for a global heap on which HDF5 would loop for ever (h5_global_heaps.hpp)
+  void guard_heaps(const ReadAt& read) const;
+  // The path of hard links that `path` names ("/" the root), "" when it
+  // names nothing; fail for a link on the way that leads out of the file.
+  std::string resolve(const std::string& path, int hops) const;
 
   std::string path_;
   H5Fail fail_;

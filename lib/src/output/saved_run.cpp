@@ -61,9 +61,10 @@ bool hex_digest(const json& v) {
 // The dimensions of a dataset, or an empty vector when the file has none by
 // that name.
 std::vector<hsize_t> dims_of(const H5File& file, const char* name, const std::string& path) {
-  if (!file.has(std::string("/") + name)) return {};
-  const H5Handle d = file.dataset(name);
-  std::vector<hsize_t> dims = file.dims(d.id, name);
+  const std::string at = std::string("/") + name;
+  if (!file.has(at)) return {};
+  const H5Handle d = file.dataset(at);
+  std::vector<hsize_t> dims = file.dims(d.id, at);
   if (dims.size() < 1 || dims.size() > 2) throw SavedRunError(path, std::string("the dataset ") + name + " is not a list or a table");
   return dims;
 }
@@ -96,7 +97,7 @@ std::vector<std::uint64_t> read_counts(const H5File& file, const char* name, con
   for (hsize_t d : dims) n *= static_cast<std::size_t>(d);
   std::vector<std::uint64_t> v(dims.empty() ? 0 : n);
   if (v.empty()) return v;
-  const H5Handle d = file.dataset(name);
+  const H5Handle d = file.dataset(std::string("/") + name);
   require_integer_type(H5Dget_type(d.id), path, std::string("the dataset ") + name);
   if (H5Dread(d.id, H5T_NATIVE_UINT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
     throw SavedRunError(path, std::string("cannot read the dataset ") + name + " as unsigned 64-bit counts");
@@ -104,7 +105,7 @@ std::vector<std::uint64_t> read_counts(const H5File& file, const char* name, con
 }
 
 std::int64_t nside_attribute(const H5File& file, const std::string& path) {
-  const H5Handle d = file.dataset("map");
+  const H5Handle d = file.dataset("/map");
   std::int64_t nside = -1;
   if (H5Aexists(d.id, "nside") <= 0) throw SavedRunError(path, "the dataset map has no nside");
   const H5Handle a{H5Aopen(d.id, "nside", H5P_DEFAULT), H5Aclose};
@@ -377,7 +378,7 @@ std::string read_saved_hdf5_file(const std::string& dir, const std::string& name
   const detail::SavedDir saved(dir);
   std::string bytes = saved.read(name);
   const std::string path = saved.path(name);
-  const detail::H5File checked(bytes, path, saved_run_error(path));  // the reader's policy, on these bytes
+  detail::H5File(bytes, path, saved_run_error(path)).check_every_link();  // h5py iterates: all of it, first
   return bytes;
 }
 
