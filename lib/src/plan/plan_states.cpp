@@ -6,6 +6,7 @@
 #include "plan/checks.hpp"
 #include "plan/model_plan.hpp"
 #include "states/state_energy.hpp"
+#include "states/state_rules.hpp"
 
 namespace arnoldweb {
 namespace detail {
@@ -32,6 +33,7 @@ std::shared_ptr<StateSet> read_scene_states(Scene& scene) {
 
 void check_scene_states(StateSet& states, const Scene& scene, const ModelDescriptor& model, const RealParams& rp) {
   check_state_energies(states, model, rp, scene.energy);
+  check_start_time(states, scene.duration);
 }
 
 }  // namespace detail

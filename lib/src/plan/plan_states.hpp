@@ -18,7 +18,8 @@ namespace arnoldweb::detail {
 // ensemble.file with another kind. Sets scene.trajectories to their number.
 std::shared_ptr<StateSet> read_scene_states(Scene& scene);
 
-// Their energies under the scene's model (the model's parameters in rp).
+// Their energies under the scene's model (the model's parameters in rp), and
+// their time against run.duration (states/state_rules.hpp).
 void check_scene_states(StateSet& states, const Scene& scene, const ModelDescriptor& model, const RealParams& rp);
 
 }  // namespace arnoldweb::detail
