@@ -154,7 +154,7 @@ void fill_initial(const Scene& scene, int initial, detail::RealParams& rp) {
 void fill_ints(const Scene& scene, const Plan& p, detail::IntParams& ip) {
   ip.seed = static_cast<std::int64_t>(scene.seed);
   fill_schedule(p, ip);
-  ip.nside = scene.nside;
+  ip.nside = p.npix ? scene.nside : 0;  // no map: the zoom histogram starts at 0, as hist_size says
   ip.max_attempts = static_cast<std::int64_t>(std::ceil(kAttemptsTimesFraction / p.accessible_fraction));
   ip.inject_index = -1;
   ip.zoom_resolution = p.zoom_resolution;
