@@ -1,13 +1,13 @@
 // arnoldweb: helpers for checking a scene's values together (the planner, the
 // accuracy pilot): the error naming a key where its value came from (and
-// exact ratios of durations, physics/durations.hpp).
+// exact ratios of durations, durations.hpp).
 #pragma once
 
 #include <cstdint>
 #include <string>
 
 #include "arnoldweb/scene.hpp"
-#include "physics/durations.hpp"  // exact_ratio
+#include "plan/durations.hpp"  // exact_ratio
 
 namespace arnoldweb::detail {
 

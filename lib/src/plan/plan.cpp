@@ -16,8 +16,8 @@
 #include "plan/indicators.hpp"
 #include "plan/analysis_plan.hpp"
 #include "plan/model_plan.hpp"
-#include "plan/plan_states.hpp"
 #include "plan/plan_params.hpp"
+#include "plan/plan_states.hpp"
 #include "plan/output_table.hpp"
 #include "plan/schedule.hpp"
 
@@ -166,23 +166,20 @@ void fill_ints(const Scene& scene, const Plan& p, detail::IntParams& ip) {
 
 }  // namespace
 
-Plan make_plan(const Scene& scene_as_written) {
+Plan make_plan(const Scene& scene_as_written, const PlanInputs& inputs) {
   Scene scene = detail::with_grid_size(scene_as_written);
-  std::shared_ptr<StateSet> states = detail::read_scene_states(scene);  // ensemble.initial = "file"
+  std::shared_ptr<const StateSet> states = detail::plan_states(scene, inputs);  // ensemble.initial = "file"
   if (scene.step_auto)
     fail_at(scene, "integrator.step",
-            "\"auto\" is resolved before planning, by a pilot ensemble on a device: resolve_step(scene, backend) "
-            "(accuracy.hpp; the arnoldweb command does this)");
+            "\"auto\" is resolved before planning, by a pilot ensemble on a device: resolve_step(scene, inputs, "
+            "backend) (accuracy.hpp; the arnoldweb command does this)");
   Plan p;
   p.scene = scene;
+  p.states = std::move(states);
   auto params = std::make_shared<detail::KernelParams>();
   const detail::ModelDescriptor& model = detail::model_of(scene);
   p.model = &model;
   detail::plan_model_values(scene, model, params->reals);
-  if (states) {
-    detail::check_scene_states(*states, scene, model, params->reals);
-    p.states = std::move(states);
-  }
   plan_method(scene, p);
   if (scene.initial == "grid")
     detail::plan_grid(scene, model, params->reals, p);
@@ -195,6 +192,9 @@ Plan make_plan(const Scene& scene_as_written) {
   fill_reals(scene, p, params->reals);
   fill_ints(scene, p, params->ints);
   detail::plan_guard(scene, model, *params, p);  // may draw initial states: after the blocks are filled
+  // a run that asks for pictures where none can be drawn computes and writes the rest
+  if (scene.images && !inputs.no_pictures.empty())
+    p.warnings.push_back({"output.images", "output.images: no pictures will be drawn: " + inputs.no_pictures});
   p.params = std::move(params);
   return p;
 }
@@ -228,7 +228,7 @@ double largest_frequency(const Scene& scene, std::string* basis) {
   kp.ints.seed = static_cast<std::int64_t>(scene.seed);
   kp.ints.max_attempts = 1000;
   std::string b;
-  const double omega = detail::model_frequency(scene, model, kp, initial_kind(scene), b);
+  const double omega = detail::model_frequency(scene, model, kp, initial_kind(scene), nullptr, b);
   if (basis) *basis = b;
   return omega;
 }
