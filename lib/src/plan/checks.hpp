@@ -15,7 +15,8 @@ namespace arnoldweb::detail {
 // position, or the option or override that gave it.
 [[noreturn]] void fail_at(const Scene& s, const std::string& key, const std::string& message);
 
-// A number for messages: 10 significant digits ("%.10g").
+// A number for messages: 10 significant digits ("%.10g"); a count: all its digits.
 std::string show_number(double v);
+std::string show_count(std::uint64_t n);
 
 }  // namespace arnoldweb::detail

@@ -193,7 +193,7 @@ double model_frequency(const Scene& scene, const ModelDescriptor& model, const K
     for (const auto& w : waves)
       drift = std::max(drift, std::fabs(w[0]) * vmax[0] + std::fabs(w[1]) * vmax[1] + std::fabs(w[2]) * vmax[2]);
     basis = "|dX/dt| <= (" + fmt(vmax[0]) + ", " + fmt(vmax[1]) + ", " + fmt(vmax[2]) + ") estimated from " +
-            std::to_string(found) + (states ? " states of " + states->source : std::string(" initial states")) +
+            show_count(found) + (states ? " states of " + states->source : std::string(" initial states")) +
             ", libration " + fmt(libration);
   }
   return drift + libration;

@@ -71,8 +71,8 @@ void plan_kernel(const Scene& scene, const detail::ModelDescriptor& model, Plan&
             "terms with observe.fli, observe.megno or observe.lyapunov (" + p.method.name + " has them)");
   if ((scene.initial_states || scene.final_states) && scene.trajectories > kMaxStateRecords)
     fail_at(scene, scene.final_states ? "observe.final_states" : "observe.initial_states",
-            "state records are kept for at most " + std::to_string(kMaxStateRecords) + " trajectories (" +
-                std::to_string(scene.trajectories) + " asked for)");
+            "state records are kept for at most " + detail::show_count(kMaxStateRecords) + " trajectories (" +
+                detail::show_count(scene.trajectories) + " asked for)");
 }
 
 void plan_histograms(const Scene& scene, Plan& p) {

@@ -29,9 +29,8 @@ std::shared_ptr<const StateSet> plan_states(Scene& scene, const PlanInputs& inpu
   if (!scene.initial_file.empty() && (at.line > 0 || at.set_index > 0) && scene.trajectories != states->count)
     fail_at(scene, "ensemble.trajectories",
             "ensemble.initial = \"file\" integrates one trajectory per state: " + states->source + " has " +
-                std::to_string(states->count) + " states, ensemble.trajectories says " +
-                std::to_string(scene.trajectories) + "; leave ensemble.trajectories out or set it to " +
-                std::to_string(states->count));
+                show_count(states->count) + " states, ensemble.trajectories says " + show_count(scene.trajectories) +
+                "; leave ensemble.trajectories out or set it to " + show_count(states->count));
   scene.trajectories = states->count;
   return states;
 }
