@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "arnoldweb/accuracy.hpp"
 #include "arnoldweb/inputs.hpp"
 #include "arnoldweb/job.hpp"
 #include "support.hpp"
@@ -112,6 +113,27 @@ TEST_SUITE("plan") {
       CHECK(why.find("64 states of") != std::string::npos);
       CHECK(why.find("use integrator.step = 0.005") != std::string::npos);
     }
+  }
+
+  TEST_CASE("integrator.step = \"auto\" from a state file: the pilot runs the first of its states") {
+    const std::string file = fgl_state_file(awtest::temp_dir("plan-inputs-auto") + "/slow.h5", 0.3);
+    // ensemble.trajectories written as the file's count: a pilot of all 64 states under the
+    // pilot's 16 would be refused
+    const Scene scene = fgl_scene(file, {"integrator.step=\"auto\"", "integrator.tolerance=1e-6",
+                                         "ensemble.trajectories=64"});
+    const PlanInputs inputs = read_plan_inputs(scene);
+    PilotOptions o;
+    o.trajectories = 16;
+    o.duration = 1;
+    o.methods = {"saba3"};
+    auto cpu = open_backend("cpu");
+    const Scene resolved = resolve_step(scene, inputs, *cpu, o);
+    REQUIRE(resolved.auto_step.used);
+    CHECK(resolved.auto_step.pilot_trajectories == 16);
+    CHECK(resolved.auto_step.pilot_max > 0);
+    const Plan p = make_plan(resolved, inputs);  // the run itself: every state
+    CHECK(p.scene.trajectories == 64);
+    CHECK(p.states->count == 64);
   }
 
   TEST_CASE("whether pictures can be drawn is an input: the plan warns where they cannot, and keeps it with_step") {
