@@ -48,7 +48,7 @@ LAYERS = [
 ]
 
 # Where the build looks for a quoted include, after the including file's own folder.
-SEARCH = ["lib/src/", "lib/include/", "lib/device/", "bench/include/", "bench/baselines/"]
+SEARCH = ["lib/src/", "lib/include/", "lib/device/", "bench/include/", "bench/baselines/", "explorer/include/"]
 # Files the build generates, by the name they are included as, and their layer.
 GENERATED = {
     "models/aw_models.h": "device",
