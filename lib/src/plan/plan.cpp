@@ -25,7 +25,6 @@ namespace arnoldweb {
 namespace {
 
 using detail::fail_at;
-std::string fmt(double v) { return detail::show_number(v); }
 
 constexpr double kTwoPi = 6.283185307179586476925;
 constexpr double kDeg = M_PI / 180.0;
