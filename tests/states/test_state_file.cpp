@@ -357,7 +357,7 @@ TEST_SUITE("states") {
         "is far from model.energy");
   }
 
-  TEST_CASE("scene keys: ensemble.file names an existing file, goes with ensemble.initial = \"file\", and is read when planned") {
+  TEST_CASE("scene keys: ensemble.file names an existing file, goes with ensemble.initial = \"file\", and is read before planning") {
     const std::string dir = awtest::temp_dir("states-keys");
     const std::string file = good_file(dir);
     const Scene ok = awtest::scene_from(kScene, {"ensemble.initial=file", awtest::set("ensemble.file", file)});
@@ -372,12 +372,14 @@ TEST_SUITE("states") {
                          doctest::Contains("\"file\" needs ensemble.file"), SceneError);
     CHECK_THROWS_WITH_AS(make_plan(awtest::scene_from(kScene, {awtest::set("ensemble.file", file)})),
                          doctest::Contains("is read only with ensemble.initial = \"file\""), SceneError);
-    // read and checked when planned: one trajectory per state
-    const Plan planned = make_plan(ok);
+    // read and checked before planning (read_plan_inputs), planned one trajectory per state
+    const auto plan_with_inputs = [](const Scene& scene) { return make_plan(scene, read_plan_inputs(scene)); };
+    CHECK_FALSE(make_plan(ok).states);  // planning itself reads no file
+    const Plan planned = plan_with_inputs(ok);
     REQUIRE(planned.states);
     CHECK(planned.states->count == 3000);
     CHECK(planned.scene.trajectories == 3000);
-    CHECK_THROWS_WITH_AS(make_plan(awtest::scene_from(kScene, {"ensemble.initial=file", awtest::set("ensemble.file", file),
+    CHECK_THROWS_WITH_AS(plan_with_inputs(awtest::scene_from(kScene, {"ensemble.initial=file", awtest::set("ensemble.file", file),
                                                                "ensemble.trajectories=12"})),
                          doctest::Contains("leave ensemble.trajectories out or set it to 3000"), SceneError);
     // `arnoldweb check` names a bad row, exit 2, and writes nothing
