@@ -8,6 +8,7 @@
 #include "arnoldweb/accuracy.hpp"
 #include "arnoldweb/cluster.hpp"
 #include "arnoldweb/errors.hpp"
+#include "arnoldweb/inputs.hpp"
 #include "command.hpp"
 #include "stop_signals.hpp"
 
@@ -69,11 +70,7 @@ int serve_rank(const std::optional<std::string>& device_option) {
   const Scene scene = parse_scene(j["text"].get<std::string>(), j["file"].get<std::string>(),
                                   j["overrides"].get<std::vector<std::string>>(),
                                   j["labels"].get<std::vector<std::string>>());
-  std::unique_ptr<Backend> pilot;
-  const Job job = plan_job(scene, [&pilot](const Scene& s) {
-    if (!pilot) pilot = open_backend("cpu");
-    return resolve_step(s, *pilot);
-  });
+  const Job job = plan_job(scene, read_plan_inputs(scene), cpu_pilot());
   auto backend = open_backend(rank_device(device_option, scene.device));
   StopSignals signals;
   RunOptions options;

@@ -1,5 +1,6 @@
 #include "arnoldweb/accuracy.hpp"
 #include "arnoldweb/errors.hpp"
+#include "arnoldweb/inputs.hpp"
 #include "command.hpp"
 
 namespace arnoldweb::cli {
@@ -38,13 +39,7 @@ PreparedJob prepare_job(const SceneArgs& args, bool force, std::string* device_w
 PreparedJob prepare_scene_job(const Scene& scene, const std::string& scene_file, bool force,
                               std::string* device_warning) {
   PreparedJob p;
-  // integrator.step = "auto": a pilot on the cpu backend (in portable math
-  // the same bits as every device), opened only when a part asks for it
-  std::unique_ptr<Backend> pilot;
-  p.job = plan_job(scene, [&pilot](const Scene& s) {
-    if (!pilot) pilot = open_backend("cpu");
-    return resolve_step(s, *pilot);
-  });
+  p.job = plan_job(scene, read_plan_inputs(scene), cpu_pilot());
   p.output.force = force;
   p.output.scene_file = scene_file;
   p.output.expected_bytes = estimate_output_bytes(p.job);

@@ -112,8 +112,8 @@ struct Bad {
   std::vector<std::string> says;
 };
 
-// Every key set to a value other than its default, but the models' own
-// parameters: those follow from the model table (full_scene()).
+// Keys set to values other than their defaults (what "every key is read"
+// checks); full_scene() adds every other key of the table at its default.
 const char* kFullSceneFixed =
     "[model]\n"
     "energy = 400.5\n"
@@ -194,17 +194,27 @@ const char* kFullSceneFixed =
     "title = \"zoom (b)\"\n"
     "set = [\"ensemble.initial=cap\"]\n";
 
-// kFullSceneFixed with every model parameter key of the table written (at its
-// default, after [model]'s other keys): a new model's keys come in by themselves.
+// kFullSceneFixed with every other key of the key table written at its default, in
+// its table (a new key, a new model's parameters come in by themselves). A key
+// without a default must be in kFullSceneFixed, or the test of every key fails on it.
 std::string full_scene() {
-  std::string model_keys;
-  for (const auto& k : arnoldweb::scene_keys())
-    if (k.key.rfind("model.", 0) == 0 && k.key != "model.energy" && k.key != "model.kind" &&
-        k.key != "model.potential" && k.key != "model.parameters")
-      model_keys += k.key.substr(6) + " = " + k.default_value + "\n";
   std::string text = kFullSceneFixed;
-  const std::string after = "parameters = { eps = 0.5 }\n";
-  text.insert(text.find(after) + after.size(), model_keys);
+  const Scene fixed = parse(text);
+  for (const auto& k : arnoldweb::scene_keys()) {
+    if (fixed.where.count(k.key) || k.default_value == "(not set)") continue;
+    const std::size_t dot = k.key.rfind('.');
+    const std::string table = k.key.substr(0, dot), line = k.key.substr(dot + 1) + " = " + k.default_value;
+    const std::string header = "[" + table + "]\n";
+    const std::string parent = table.substr(table.rfind('.') + 1) + " = { ";  // an inline table
+    std::size_t at = text.find(header);
+    if (at != std::string::npos) {
+      text.insert(at + header.size(), line + "\n");
+    } else if (fixed.where.count(table) && (at = text.find(parent)) != std::string::npos) {
+      text.insert(at + parent.size(), line + ", ");
+    } else {
+      text += header + line + "\n";
+    }
+  }
   return text;
 }
 
