@@ -17,11 +17,11 @@ Scene load_scene_args(const SceneArgs& a) {
   std::vector<std::string> sets = a.sets, labels(a.sets.size());
   if (a.out) {
     if (a.out->empty()) throw OutputRefused("", "--out was given an empty directory name");
-    sets.push_back("output.dir=" + *a.out);
+    sets.push_back(string_override("output.dir", *a.out, "--out " + *a.out));
     labels.push_back("--out " + *a.out);
   }
   if (a.device) {
-    sets.push_back("run.device=" + *a.device);
+    sets.push_back(string_override("run.device", *a.device, "--device " + *a.device));
     labels.push_back("--device " + *a.device);
   }
   return load_scene(a.scene, sets, labels);
@@ -29,7 +29,8 @@ Scene load_scene_args(const SceneArgs& a) {
 
 std::optional<std::string> read_device_option(const std::optional<std::string>& device) {
   if (!device) return device;
-  return parse_scene("", "", {"run.device=" + *device}, {"--device " + *device}).device;
+  const std::string label = "--device " + *device;
+  return parse_scene("", "", {string_override("run.device", *device, label)}, {label}).device;
 }
 
 PreparedJob prepare_job(const SceneArgs& args, bool force, std::string* device_warning) {

@@ -51,7 +51,7 @@ def run(scene: SceneLike, device: Optional[str] = None,
     """
     s = _scene_of(scene)
     if device is not None:
-        s._apply(f"run.device={device}", f"device={device!r}")
+        s._apply(f"run.device={_quote(device)}", f"device={device!r}")
     x = p = None
     if initial is not None:
         x, p = (np.ascontiguousarray(a, dtype=np.float64) for a in _pair(initial))
@@ -138,7 +138,7 @@ def accuracy(scene: SceneLike, target: Optional[float] = None, device: Optional[
     found, why_not. Computes only the pilot; writes nothing."""
     s = _scene_of(scene)
     if device is not None:
-        s._apply(f"run.device={device}", f"device={device!r}")
+        s._apply(f"run.device={_quote(device)}", f"device={device!r}")
     if target is not None and not (0 < target < 1):
         raise ValueError(f"target must be greater than 0 and less than 1, got {target}")
     if not 1 <= safety <= 1000:

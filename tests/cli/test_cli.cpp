@@ -120,11 +120,19 @@ TEST_SUITE("cli") {
     const std::string scene = dir + "/scene.toml";
     std::ofstream(scene) << kGood;
     std::string out;
-    // blanks around the id are dropped as in --set run.device= cpu: check and run agree
-    CHECK(awtest::run_cli({"check", scene, "--device", " cpu"}, &out) == 0);
-    CHECK(awtest::run_cli({"run", scene, "--quiet", "--device", " cpu", "--out", dir + "/blank"}, &out) == 0);
-    CAPTURE(out);
-    CHECK(fs::exists(dir + "/blank/summary.json"));
+    // the value as it is: blanks around the id, or TOML that reads as cpu ('"cpu" #' ran on cpu), name no
+    // device; check and run agree
+    for (const char* device : {" cpu", "\"cpu\" #", "\"cpu\"", "'cpu'"}) {
+      CAPTURE(device);
+      for (const char* command : {"check", "run"}) {
+        CHECK(awtest::run_cli({command, scene, "--device", device, "--out", dir + "/blank"}, &out) == 2);
+        CAPTURE(out);
+        CHECK(contains(out, "error: --device " + arnoldweb::printable(device) + ": run.device: must be "));
+        CHECK_FALSE(fs::exists(dir + "/blank"));
+      }
+    }
+    CHECK(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", dir + "/plain"}, &out) == 0);
+    CHECK(fs::exists(dir + "/plain/summary.json"));
     // an index with a leading zero names no device: refused as a form, like the scene's run.device
     for (const char* command : {"check", "run"}) {
       CAPTURE(command);
@@ -142,6 +150,35 @@ TEST_SUITE("cli") {
     CHECK(awtest::run_cli({"check", scene, "--out", dir + "/a\x1b[2Jb"}, &out) == 0);
     CHECK(contains(out, "a\\u001b[2Jb"));
     CHECK(out.find('\x1b') == std::string::npos);
+  }
+
+  TEST_CASE("issue 37: --out is a directory's name as it is, never read as TOML") {
+    const std::string dir = awtest::temp_dir("cli-out-names");
+    std::ofstream(dir + "/scene.toml")
+        << kGood << "[[panel]]\nname = \"a\"\ntitle = \"A\"\nset = [\"model.energy=16\"]\n";
+    awtest::CliOptions here;
+    here.cwd = dir;
+    std::string out;
+    // each would be read as TOML (a string and a comment, a quote, a table, an escape) or lose its
+    // blanks: '"q" #' wrote to q; the panels' directories are built from it too
+    for (const std::string name : {"\"q\" #", "'q' # x", "a\"b", " lead and trail ", "two\nlines", "back\\slash\\n",
+                                   "\"\"\"triple", "[t]\nk = 1", "x = 1", "\u00e9t\u00e9 \U0001f310 # \"", "tab\there"}) {
+      CAPTURE(arnoldweb::printable(name));
+      CHECK(awtest::run_cli({"check", "scene.toml", "--out", name}, &out, here) == 0);
+      CHECK(contains(out, arnoldweb::printable(name)));
+      REQUIRE(awtest::run_cli({"run", "scene.toml", "--quiet", "--device", "cpu", "--out", name}, &out, here) == 0);
+      CAPTURE(out);
+      CHECK(fs::exists(dir + "/" + name + "/summary.json"));
+      CHECK(fs::exists(dir + "/" + name + "/panel-a/summary.json"));
+      CHECK(awtest::summary_of(dir + "/" + name)["scene"]["output"]["dir"] == name);
+      CHECK(awtest::summary_of(dir + "/" + name + "/panel-a")["scene"]["output"]["dir"] == name + "/panel-a");
+      fs::remove_all(dir + "/" + name);
+    }
+    for (const char* other : {"q", "'q'", "a", "lead and trail", "two", "t", "x"}) CHECK_FALSE(fs::exists(dir + "/" + other));
+    // a name that is not UTF-8 cannot be recorded in the scene (TOML): refused, nothing written
+    CHECK(awtest::run_cli({"run", "scene.toml", "--quiet", "--out", "odd-\xff-name"}, &out, here) == 2);
+    CHECK(contains(out, "error: --out odd-\\xff-name: output.dir: is not UTF-8 text"));
+    CHECK_FALSE(fs::exists(dir + "/odd-\xff-name"));
   }
 
   TEST_CASE("issue 37: observe.diffusion: directions refused when checked; actions sampled finer than the energy") {

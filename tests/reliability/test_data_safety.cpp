@@ -274,11 +274,12 @@ TEST_SUITE("reliability") {
     // `check` refuses them just the same
     CHECK(awtest::run_cli({"check", scene, "--out", "/proc/arnoldweb-out"}, &out) == 3);
     CHECK(awtest::run_cli({"check", scene, "--out", ""}, &out) == 2);
-    // a name that is not UTF-8 is written safely
+    // a name that is not UTF-8 is refused: the scene (TOML, in summary.json) could not record it, and
+    // recorded as U+FFFD it would name another directory
     const std::string odd = root + "/odd-\xff\xfe-name";
-    CHECK(awtest::run_cli(run_args(scene, odd), &out) == 0);
-    const auto j = summary_of(odd);
-    CHECK(contains(j["scene"]["output"]["dir"].get<std::string>(), "odd-"));
+    CHECK(awtest::run_cli(run_args(scene, odd), &out) == 2);
+    CHECK(contains(out, "odd-\\xff\\xfe-name: output.dir: is not UTF-8 text"));
+    CHECK_FALSE(fs::exists(odd));
   }
 
   TEST_CASE("issue 37, 8. --force deletes only files whose digest summary.json records, and still matches") {

@@ -10,14 +10,13 @@
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/output.hpp"
 #include "output/saved_run.hpp"
-#include "scene/scene_internal.hpp"  // toml_string, toml_double, show_double
+#include "scene/scene_internal.hpp"  // toml_double, show_double
 
 namespace arnoldweb {
 namespace {
 
 using scene_detail::show_double;
 using scene_detail::toml_double;
-using scene_detail::toml_string;
 
 std::string trim(const std::string& s) {
   const auto b = s.find_first_not_of(" \t");
@@ -53,15 +52,6 @@ void check_sets(const ContinueArgs& args) {
   }
 }
 
-// A directory's name as a TOML string; SavedRunError for a name that TOML
-// cannot hold (not UTF-8: toml_string would write U+FFFD, another name).
-std::string quoted_dir(const std::string& dir) {
-  const std::string q = toml_string(dir);
-  if (q.find("\xEF\xBF\xBD") != std::string::npos && dir.find("\xEF\xBF\xBD") == std::string::npos)
-    throw SavedRunError(dir, "its name is not UTF-8, and a scene (TOML) holds only UTF-8 names: rename it");
-  return q;
-}
-
 }  // namespace
 
 const std::vector<std::string>& continue_keys() {
@@ -93,7 +83,7 @@ Continuation continuation_of(const std::string& dir, const ContinueArgs& args) {
   if (saved.checked() && !saved.recorded("states.h5"))
     throw SavedRunError(states, "summary.json records no digest for it: it is not a file the run wrote");
   const std::string from = "continue " + dir, duration = show_double(args.duration);
-  c.overrides = {"ensemble.initial=\"file\"", "ensemble.file=" + quoted_dir(states),
+  c.overrides = {"ensemble.initial=\"file\"", string_override("ensemble.file", states, from),
                  "run.duration=" + toml_double(args.duration)};
   c.labels = {from, from, "continue for " + duration + " T"};
   for (std::size_t k = 0; k < args.sets.size(); ++k) {
@@ -105,11 +95,11 @@ Continuation continuation_of(const std::string& dir, const ContinueArgs& args) {
     out = dir + "-to-" + show_double(c.end_time + args.duration);
   }
   if (out) {
-    c.overrides.push_back("output.dir=" + quoted_dir(*out));
+    c.overrides.push_back(string_override("output.dir", *out, "--out " + *out));
     c.labels.push_back("--out " + *out);
   }
-  if (args.device) {  // as `run` gives it (the device check reads the text)
-    c.overrides.push_back("run.device=" + *args.device);
+  if (args.device) {
+    c.overrides.push_back(string_override("run.device", *args.device, "--device " + *args.device));
     c.labels.push_back("--device " + *args.device);
   }
   return c;

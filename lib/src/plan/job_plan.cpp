@@ -17,8 +17,9 @@ std::vector<PartScene> part_scenes(const Scene& scene) {
     sets.insert(sets.end(), scene.overrides.begin(), scene.overrides.end());
     labels.insert(labels.end(), scene.override_labels.begin(), scene.override_labels.end());
     labels.resize(sets.size());
-    sets.push_back("output.dir=" + scene.output_dir + "/panel-" + panel.name);
-    labels.push_back("the output directory of panel " + panel.name);
+    const std::string label = "the output directory of panel " + panel.name;
+    sets.push_back(string_override("output.dir", scene.output_dir + "/panel-" + panel.name, label));
+    labels.push_back(label);
     Scene s = parse_scene(scene.text, scene.file, sets, labels);
     s.panels.clear();
     parts.push_back({panel.name, panel.title, "panel-" + panel.name, std::move(s)});
