@@ -57,7 +57,7 @@ struct RecordDataset {
 // A boolean scene key that asks for a row (or some of its datasets): set true,
 // it adds its effect's bit and the bits that effect needs to the kernel's
 // features (lib/src/plan/effects.cpp; the effect is named after the key:
-// "observe.megno" is effect "megno"). The scene keeps it in Scene::switches;
+// "observe.<name>" is effect "<name>"). The scene keeps it in Scene::switches;
 // the key table (lib/src/scene/keys.cpp) reads, writes and documents it from here.
 struct OutputSwitch {
   std::string key;            // "observe.<name>"
