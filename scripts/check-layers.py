@@ -29,6 +29,7 @@ LAYERS = [
     (1, "math", ["lib/src/sphere/", "lib/src/analysis/", "lib/include/arnoldweb/sphere.hpp",
                  "lib/include/arnoldweb/analysis.hpp", "lib/include/arnoldweb/diffusion.hpp"]),
     (2, "physics", ["lib/src/physics/", "lib/include/arnoldweb/methods.hpp", "lib/include/arnoldweb/models.hpp"]),
+    (2, "outtable", ["lib/src/output_table/"]),
     (3, "scene", ["lib/src/scene/", "lib/include/arnoldweb/scene.hpp"]),
     (4, "plan", ["lib/src/plan/", "lib/include/arnoldweb/plan.hpp", "lib/include/arnoldweb/job.hpp",
                  "lib/include/arnoldweb/step_guard.hpp", "lib/include/arnoldweb/device_info.hpp",

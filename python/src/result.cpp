@@ -86,15 +86,13 @@ nb::object frames(const RunRecord& r, std::size_t k) {
   return owned(std::move(all), {x.frames.size(), npix});
 }
 
-// The indicators asked for and the shape of their grid, as indicators.h5 has them
-// (healpix: 12 nside^2 in RING order; lonlat and plane: [n2][n1]).
+// The shape of the indicators' grid, as indicators.h5 has it (healpix: 12
+// nside^2 in RING order; lonlat and plane: [n2][n1]), and the grid's kind.
+// Which indicators a part holds: Result.outputs["indicators"] (the output table).
 nb::dict indicator_layout(const RunRecord& r, std::size_t k) {
   const arnoldweb::Scene& s = plan(r, k).scene;
   const std::size_t n = part(r, k).reals("indicators").size() / AW_IND_REALS;
   nb::dict d;
-  d["fli"] = s.fli;
-  d["megno"] = s.megno;
-  d["lyapunov"] = s.lyapunov;
   const auto n1 = static_cast<std::size_t>(s.grid_resolution[0]), n2 = static_cast<std::size_t>(s.grid_resolution[1]);
   if (s.initial == "grid" && s.grid_kind != "healpix" && n == n1 * n2)
     d["shape"] = nb::make_tuple(n2, n1);
@@ -186,7 +184,7 @@ void bind_result(nb::module_& m) {
       .def("output_datasets", &output_datasets,
            "Every per-trajectory output as its files hold it: {output: {dataset: array}}.")
       .def("indicator_layout", &indicator_layout,
-           "Which indicators the part asked for (fli, megno, lyapunov) and the grid's shape as in indicators.h5.")
+           "The shape of the indicators' grid as in indicators.h5, and the grid's kind.")
       .def("frames", &frames)
       .def("nside", [](const RunRecord& r, std::size_t k) { return part(r, k).nside; })
       .def("counts", &counts)

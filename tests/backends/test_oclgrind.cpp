@@ -135,13 +135,17 @@ std::vector<Variant> variants() {
                [](Plan& p) { p.kernel.features |= AW_F_REVERSE; }});
   // chaos indicators (docs/indicators.md): the tangent step with merged kicks,
   // and drift-first with MEGNO's extra Hessian, on a grid of directions
-  v.push_back({"indicators", [](Scene& s) { s.fli = s.megno = s.lyapunov = true; }});
+  v.push_back({"indicators", [](Scene& s) {
+                 s.fli = s.lyapunov = true;
+                 s.switches.insert("observe.megno");
+               }});
   v.push_back({"indicators on a grid, drift-first", [](Scene& s) {
                  s.method = "pefrl";
                  s.initial = "grid";
                  s.grid_kind = "lonlat";
                  s.grid_resolution = {7, 3};
-                 s.fli = s.megno = true;
+                 s.fli = true;
+                 s.switches.insert("observe.megno");
                }});
   // frequency analysis (the sampling, the analysis kernel) and the actions' samples
   v.push_back({"frequencies and diffusion", [](Scene& s) {

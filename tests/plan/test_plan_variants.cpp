@@ -11,7 +11,7 @@
 
 #include "aw_params.h"
 #include "physics/model_table.hpp"
-#include "plan/output_table.hpp"
+#include "output_table/output_table.hpp"
 #include "plan/plan_params.hpp"
 #include "support.hpp"
 

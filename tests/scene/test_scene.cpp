@@ -85,7 +85,7 @@ void check_same(const Scene& a, const Scene& b) {
   CHECK(a.frame_times == b.frame_times);
   // chaos indicators and grids
   CHECK(a.fli == b.fli);
-  CHECK(a.megno == b.megno);
+  CHECK(a.switches == b.switches);
   CHECK(a.lyapunov == b.lyapunov);
   CHECK(a.tangent_initial == b.tangent_initial);
   CHECK(a.grid_kind == b.grid_kind);
@@ -298,7 +298,7 @@ TEST_SUITE("scene") {
     CHECK(s.confine_width == 8.5);
     CHECK(s.frame_times == std::vector<double>{0, 100, 1e3, 1e4});
     CHECK(s.fli);
-    CHECK(s.megno);
+    CHECK(s.observes("observe.megno"));
     CHECK(s.lyapunov);
     CHECK(s.tangent_initial == std::vector<double>{1, 0, 0, 0, 0, 2});
     CHECK(s.frequencies);

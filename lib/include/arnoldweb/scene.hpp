@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -98,6 +99,11 @@ struct Scene {
   bool energy_error = true;
   double energy_every = 1.0;  // sample interval of |dE|, in T
   std::optional<double> max_energy_error;
+  // The output table's switches set true (their keys, "observe.<name>"): each
+  // row of lib/src/output_table/output_table.cpp declares its own; `arnoldweb
+  // keys` lists them. No field here per output.
+  std::set<std::string> switches;
+  bool observes(const std::string& key) const { return switches.count(key) > 0; }
   bool initial_states = false;
   bool final_states = false;
   // observe.zoom: an R x R histogram of a square region in gnomonic projection
@@ -112,11 +118,10 @@ struct Scene {
   // observe.frames: one map per span [t_k, t_k+1) of window start times, in T
   std::vector<double> frame_times;
 
-  // Chaos indicators (docs/indicators.md): observe.fli, .megno, .lyapunov,
+  // Chaos indicators (docs/indicators.md): observe.fli, .lyapunov,
   // the initial tangent vector (dX in radians, dP; normalised when planned),
   // and grids of initial conditions (ensemble.initial = "grid").
   bool fli = false;
-  bool megno = false;
   bool lyapunov = false;
   std::vector<double> tangent_initial = {0.3, -0.7, 0.5, 0.2, 0.6, -0.1};
   std::string grid_kind = "healpix";                // ensemble.grid.kind: healpix, lonlat, plane

@@ -85,7 +85,8 @@ Scene pilot_scene(const Scene& s, const std::string& method, double step, std::u
   p.zoom = false;
   p.confine = false;
   p.frame_times.clear();
-  p.fli = p.megno = p.lyapunov = false;
+  p.fli = p.lyapunov = false;
+  p.switches.clear();
   p.frequencies = false;
   p.diffusion = false;
   p.slice = 0;

@@ -10,6 +10,7 @@
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/output.hpp"
 #include "output/saved_run.hpp"
+#include "output_table/output_table.hpp"
 #include "scene/scene_internal.hpp"  // toml_double, show_double
 
 namespace arnoldweb {
@@ -58,12 +59,17 @@ const std::vector<std::string>& continue_keys() {
   // Not: model.*, integrator.*, ensemble.* but chunk (they make other trajectories), run.duration
   // (the duration is the continuation's own), observe.max_energy_error and observe.confine (they
   // flag trajectories, whose status the final states carry).
-  static const std::vector<std::string> keys = {
-      "run.device",           "run.checkpoint_every",  "run.slice",         "run.average",
-      "ensemble.chunk",       "observe.velocity_map",  "observe.energy_error", "observe.initial_states",
-      "observe.final_states", "observe.zoom",          "observe.frames",    "observe.fli",
-      "observe.megno",        "observe.lyapunov",      "observe.tangent_initial", "observe.frequencies",
-      "observe.diffusion",    "output.dir",            "output.images"};
+  // The output table's switches too.
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> k = {
+        "run.device",           "run.checkpoint_every", "run.slice",         "run.average",
+        "ensemble.chunk",       "observe.velocity_map", "observe.energy_error", "observe.initial_states",
+        "observe.final_states", "observe.zoom",         "observe.frames",    "observe.fli",
+        "observe.lyapunov",     "observe.tangent_initial", "observe.frequencies", "observe.diffusion",
+        "output.dir",           "output.images"};
+    for (const detail::OutputSwitch* w : detail::output_switches()) k.push_back(w->key);
+    return k;
+  }();
   return keys;
 }
 

@@ -31,7 +31,7 @@ struct PictureFunctions {
                const std::array<double, 2>& center, double width, const RenderOptions& o);
   void (*figure)(const std::string& path, const Plan& plan, const Result& result,
                  const std::vector<FigurePanel>& panels, const RenderOptions& o);
-  // fli.png, megno.png (grid scenes); frequency_map.png, diffusion_index.png, diffusion.png
+  // the grid pictures the output table names (fli.png, ...); frequency_map.png, diffusion_index.png, diffusion.png
   void (*indicators)(const Plan& plan, const Result& result, const std::string& dir, std::vector<std::string>& names);
   void (*analyses)(const Plan& plan, const Result& result, const std::string& dir, std::vector<std::string>& names);
 };

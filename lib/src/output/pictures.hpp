@@ -15,7 +15,7 @@ namespace arnoldweb::detail {
 // Writes the pictures the result has data for into `dir` and appends their
 // names (relative to dir) to `names` as each is complete: map.png,
 // map_mollweide.png, map_resonances.png, zoom.png, frames/frame_NNN.png (and
-// frames.mp4 when ffmpeg is installed); fli.png, megno.png,
+// frames.mp4 when ffmpeg is installed); the grid pictures the output table names,
 // frequency_map.png, diffusion_index.png and diffusion.png where the result
 // has their data. Without the pictures' plugin: none. Throws OutputError.
 void write_pictures(const Plan& plan, const Result& result, const std::string& dir, std::vector<std::string>& names);

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "arnoldweb/output.hpp"
-#include "plan/output_table.hpp"
+#include "output_table/output_table.hpp"
 
 namespace arnoldweb {
 namespace {

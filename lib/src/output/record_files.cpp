@@ -10,7 +10,7 @@
 #include "arnoldweb/output.hpp"
 #include "output/atomic_file.hpp"
 #include "output/h5_writer.hpp"
-#include "plan/output_table.hpp"
+#include "output_table/output_table.hpp"
 
 namespace arnoldweb {
 namespace {

@@ -8,7 +8,7 @@
 #include "arnoldweb/output.hpp"
 #include "arnoldweb/version.hpp"
 #include "output/file_digest.hpp"
-#include "plan/output_table.hpp"
+#include "output_table/output_table.hpp"
 
 namespace arnoldweb {
 namespace {

@@ -1,5 +1,5 @@
 // arnoldweb: pictures of per-trajectory values over a grid of initial
-// conditions (fli.png, megno.png, diffusion_index.png; render_indicators.cpp,
+// conditions (those the output table names, diffusion_index.png; render_indicators.cpp,
 // docs/indicators.md), and what other pictures of values share: a linear
 // colour scale between percentiles with its bar.
 #pragma once
@@ -32,7 +32,8 @@ std::string picture_caption(const Result& r);
 void write_grid_picture(const Plan& plan, const Result& r, const std::string& path, const std::vector<double>& values,
                         const std::string& label);
 
-// Writes fli.png and megno.png (those asked for) of a grid scene into `dir`,
+// Writes the pictures that the output table's datasets name (RecordDataset::
+// picture: fli.png, ...), of those the run wrote, for a grid scene into `dir`,
 // appending their names to `names`. Nothing without a grid. Throws OutputError.
 void write_indicator_pictures(const Plan& plan, const Result& result, const std::string& dir,
                               std::vector<std::string>& names);

@@ -1,5 +1,6 @@
 // arnoldweb: pictures of the chaos indicators (docs/indicators.md): fli.png
-// and megno.png of a grid of initial conditions. A healpix grid is drawn on
+// and the other pictures of a grid of initial conditions that the output
+// table's datasets name (RecordDataset::picture). A healpix grid is drawn on
 // the sphere of momentum directions in Mollweide projection; a lonlat or plane
 // grid as an image with labelled axes. Linear colour scale between the 1st and
 // 99th percentile of the finite values, with a colour bar; NaN (flagged
@@ -12,6 +13,7 @@
 #include "arnoldweb/output.hpp"
 #include "arnoldweb/sphere.hpp"
 #include "aw_params.h"
+#include "output_table/output_table.hpp"
 #include "pictures/canvas.hpp"
 #include "pictures/indicator_pictures.hpp"
 #include "pictures/sphere_view.hpp"
@@ -52,11 +54,11 @@ void linear_bar(Canvas& c, double x, double y, double w, double h, const LinearS
 
 namespace {
 
-std::vector<double> column(const Result& r, int slot) {
-  const std::vector<double>& ind = r.reals("indicators");
-  const std::size_t n = ind.size() / AW_IND_REALS;
+// Real column `c` of every trajectory's record.
+std::vector<double> column(const Records& rec, int c) {
+  const std::size_t n = rec.count();
   std::vector<double> v(n);
-  for (std::size_t t = 0; t < n; ++t) v[t] = ind[t * AW_IND_REALS + slot];
+  for (std::size_t t = 0; t < n; ++t) v[t] = rec.reals[t * rec.reals_per + static_cast<std::size_t>(c)];
   return v;
 }
 
@@ -194,22 +196,20 @@ void write_grid_picture(const Plan& plan, const Result& r, const std::string& pa
 void write_indicator_pictures(const Plan& plan, const Result& r, const std::string& dir,
                               std::vector<std::string>& names) {
   const Scene& s = plan.scene;
-  if (s.initial != "grid" || r.reals("indicators").empty()) return;
-  struct Picture {
-    bool asked;
-    const char* file;
-    int slot;
-    const char* label;
-  };
-  const Picture pictures[] = {{s.fli, "fli.png", AW_IND_FLI, "FLI = max log|w|"},
-                              {s.megno, "megno.png", AW_IND_MEGNO, "mean MEGNO <Y>"}};
-  for (const Picture& p : pictures) {
-    if (!p.asked) continue;
-    write_grid_picture(plan, r, dir + "/" + p.file, column(r, p.slot), p.label);
-    names.push_back(p.file);
+  if (s.initial != "grid") return;
+  // every dataset of the output table that names a picture, where the run wrote it
+  for (const RecordOutput* row : records_reported(plan.kernel.features)) {
+    const Records* rec = r.records_of(row->name);
+    if (!rec || rec->reals.empty()) continue;
+    for (const RecordDataset& d : row->datasets) {
+      if (d.picture.empty() || d.integers || (d.feature && !(plan.kernel.features & d.feature))) continue;
+      write_grid_picture(plan, r, dir + "/" + d.picture, column(*rec, d.first), d.picture_label);
+      names.push_back(d.picture);
+    }
   }
-  if (s.fli && s.grid_kind == "healpix" && !r.map.empty() && r.nside > 0) {
-    render_map_and_fli(dir + "/map_and_fli.png", r.map, r.nside, column(r, AW_IND_FLI), s.grid_nside,
+  const Records* ind = r.records_of("indicators");
+  if (s.fli && ind && !ind->reals.empty() && s.grid_kind == "healpix" && !r.map.empty() && r.nside > 0) {
+    render_map_and_fli(dir + "/map_and_fli.png", r.map, r.nside, column(*ind, AW_IND_FLI), s.grid_nside,
                        picture_title(plan), picture_caption(r));
     names.push_back("map_and_fli.png");
   }

@@ -3,15 +3,27 @@
 
 #include "arnoldweb/plan.hpp"
 #include "aw_params.h"
+#include "output_table/output_table.hpp"
 
 namespace arnoldweb::detail {
 
 namespace {
 bool tracks_energy(const Scene& s) { return s.energy_error || s.max_energy_error.has_value(); }
+
+// The rows with one per switch of the output table (asked through features_of),
+// each before the first row of a higher bit.
+std::vector<EffectRow> with_switches(std::vector<EffectRow> rows) {
+  for (const OutputSwitch* w : output_switches()) {
+    auto at = rows.begin();
+    while (at != rows.end() && at->bit < w->bit) ++at;
+    rows.insert(at, EffectRow{w->effect(), w->bit, nullptr});
+  }
+  return rows;
+}
 }  // namespace
 
 const std::vector<EffectRow>& effects() {
-  static const std::vector<EffectRow> rows = {
+  static const std::vector<EffectRow> rows = with_switches({
       {"velocity_map", AW_F_VELOCITY_MAP, [](const Scene& s) { return s.velocity_map; }},
       {"energy_error", AW_F_ENERGY, tracks_energy},
       {"max_energy_error", AW_F_ENERGY_LIMIT, [](const Scene& s) { return s.max_energy_error.has_value(); }},
@@ -22,20 +34,20 @@ const std::vector<EffectRow>& effects() {
       {"confine", AW_F_CONFINE, [](const Scene& s) { return s.confine; }},
       {"frames", AW_F_FRAMES, [](const Scene& s) { return !s.frame_times.empty(); }},
       {"time_reversal", AW_F_REVERSE, nullptr},
-      {"tangent", AW_F_TANGENT, [](const Scene& s) { return s.fli || s.megno || s.lyapunov; }},
+      // the output table's switches ask for their own bits as well (features_of)
+      {"tangent", AW_F_TANGENT, [](const Scene& s) { return s.fli || s.lyapunov; }},
       {"fli", AW_F_FLI, [](const Scene& s) { return s.fli; }},
-      {"megno", AW_F_MEGNO, [](const Scene& s) { return s.megno; }},
       {"lyapunov", AW_F_LYAPUNOV, [](const Scene& s) { return s.lyapunov; }},
       {"frequencies", AW_F_FREQUENCIES, [](const Scene& s) { return s.frequencies; }},
       {"diffusion", AW_F_DIFFUSION, [](const Scene& s) { return s.diffusion; }},
       // states from a file (ensemble.initial = "file"); time slices add it when planned (plan.cpp)
       {"carry", AW_F_CARRY, [](const Scene& s) { return s.initial == "file"; }},
-  };
+  });
   return rows;
 }
 
 std::uint32_t features_of(const Scene& scene) {
-  std::uint32_t f = 0;
+  std::uint32_t f = switch_features(scene.switches);
   for (const EffectRow& e : effects())
     if (e.asked && e.asked(scene)) f |= e.bit;
   return f;
@@ -50,6 +62,13 @@ std::vector<std::string> feature_names(std::uint32_t f) {
   for (const auto& e : detail::effects())
     if (f & e.bit) n.push_back(e.name);
   return n;
+}
+
+std::vector<std::string> output_names() {
+  std::vector<std::string> names;
+  for (const detail::RecordOutput& r : detail::record_outputs())
+    if (!r.internal()) names.push_back(r.name);
+  return names;
 }
 
 }  // namespace arnoldweb

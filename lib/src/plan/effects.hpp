@@ -17,12 +17,13 @@ namespace arnoldweb::detail {
 struct EffectRow {
   std::string name;
   std::uint32_t bit = 0;
-  bool (*asked)(const Scene& scene) = nullptr;  // null: only test code sets the bit
+  // null: only test code sets the bit, or the planner, or a switch of the output table
+  bool (*asked)(const Scene& scene) = nullptr;
 };
 
 const std::vector<EffectRow>& effects();
 
-// The feature mask of the effects `scene` asks for.
+// The feature mask of the effects `scene` asks for, its output switches' bits included.
 std::uint32_t features_of(const Scene& scene);
 
 }  // namespace arnoldweb::detail

@@ -18,7 +18,7 @@
 #include "plan/model_plan.hpp"
 #include "plan/plan_params.hpp"
 #include "plan/plan_states.hpp"
-#include "plan/output_table.hpp"
+#include "output_table/output_table.hpp"
 #include "plan/schedule.hpp"
 
 namespace arnoldweb {
@@ -51,6 +51,16 @@ int initial_kind(const Scene& scene) {
                                        : AW_INITIAL_SHELL;
 }
 
+// The keys that ask for the tangent dynamics: observe.fli, observe.lyapunov and the output table's switches that need it.
+std::string tangent_keys() {
+  std::vector<std::string> keys = {"observe.fli", "observe.lyapunov"};
+  for (const detail::OutputSwitch* w : detail::output_switches())
+    if (w->needs & AW_F_TANGENT) keys.push_back(w->key);
+  std::string s;
+  for (std::size_t i = 0; i < keys.size(); ++i) s += (i == 0 ? "" : i + 1 == keys.size() ? " or " : ", ") + keys[i];
+  return s;
+}
+
 void plan_kernel(const Scene& scene, const detail::ModelDescriptor& model, Plan& p) {
   KernelConfig& k = p.kernel;
   k.precision = scene.precision;
@@ -67,7 +77,7 @@ void plan_kernel(const Scene& scene, const detail::ModelDescriptor& model, Plan&
     fail_at(scene, "integrator.method",
             "the chaos indicators follow the tangent map of the step, and a force-gradient kick's tangent map "
             "needs third derivatives of V, which the models do not provide: use a method without force-gradient "
-            "terms with observe.fli, observe.megno or observe.lyapunov (" + p.method.name + " has them)");
+            "terms with " + tangent_keys() + " (" + p.method.name + " has them)");
   if ((scene.initial_states || scene.final_states) && scene.trajectories > kMaxStateRecords)
     fail_at(scene, scene.final_states ? "observe.final_states" : "observe.initial_states",
             "state records are kept for at most " + detail::show_count(kMaxStateRecords) + " trajectories (" +

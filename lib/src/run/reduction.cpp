@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "aw_params.h"
-#include "plan/output_table.hpp"
+#include "output_table/output_table.hpp"
 #include "plan/plan_params.hpp"
 #include "run/byte_stream.hpp"
 #include "run/chunk_loop.hpp"

@@ -4,12 +4,14 @@
 // it is written back. Reading (read_values), --set, `arnoldweb keys`,
 // to_toml(), the JSON echo in summary.json and the key list of docs/scenes.md
 // (generated: `arnoldweb keys --markdown`) all come from here.
-// Adding a key: a field in Scene (scene.hpp) and a row here.
+// Adding a key: a field in Scene (scene.hpp) and a row here; an output's
+// boolean switch is declared by its row of the output table instead.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 
 #include "arnoldweb/methods.hpp"
+#include "output_table/output_table.hpp"
 #include "physics/model_table.hpp"
 #include "scene/reader.hpp"
 
@@ -734,9 +736,6 @@ void indicator_keys(Rows& add) {
       "The position X (angles, radians) of every grid point.");
   add("observe.fli", "boolean", "true or false", "true or false", bool_of(&Scene::fli), bool_into(&Scene::fli),
       "Fast Lyapunov indicator of every trajectory: max over the run of the log of the norm of the tangent vector w (norm 1 at the start).");
-  add("observe.megno", "boolean", "true or false", "true or false", bool_of(&Scene::megno), bool_into(&Scene::megno),
-      "Mean MEGNO <Y> of every trajectory (2 on regular orbits, growing as lambda t / 2 on chaotic ones) and the "
-      "Lyapunov exponent from its slope.");
   add("observe.lyapunov", "boolean", "true or false", "true or false", bool_of(&Scene::lyapunov),
       bool_into(&Scene::lyapunov), "Finite-time maximal Lyapunov exponent, log(norm of w(t)) / t, of every trajectory, in 1/T.");
   add("observe.tangent_initial", "array of 6 floats", kDirectionRange, std::string("an array of 6 floats, ") + kDirectionRange,
@@ -746,6 +745,23 @@ void indicator_keys(Rows& add) {
       },
       "Initial tangent vector (dX in radians, dP) of the indicators, normalised to 1. The default has no symmetry "
       "between coordinates (a symmetric one stays in symmetric planes and hides resonances such as I1 = I2).");
+}
+
+// The switches of the output table's rows (lib/src/output_table/), kept in Scene::switches.
+void output_switch_keys(Rows& add) {
+  for (const detail::OutputSwitch* w : detail::output_switches()) {
+    const std::string key = w->key;
+    add(key, "boolean", "true or false", "true or false", [key](const Scene& s) { return boolean(s.observes(key)); },
+        [](Reader& r, const std::string& k, const toml::node& n, Scene& s) {
+          bool on = false;
+          if (!r.boolean(k, n, on)) return;
+          if (on)
+            s.switches.insert(k);
+          else
+            s.switches.erase(k);
+        },
+        w->meaning);
+  }
 }
 
 // [[panel]] tables are read as a whole (panels.cpp); these rows document them.
@@ -768,6 +784,7 @@ std::vector<KeySpec> build() {
   run_keys(rows);
   observe_keys(rows);
   indicator_keys(rows);
+  output_switch_keys(rows);
   analysis_keys(rows);
   output_keys(rows);
   panel_keys(rows);

@@ -1,7 +1,6 @@
 // arnoldweb: the output table (output_table.hpp).
-#include "plan/output_table.hpp"
+#include "output_table/output_table.hpp"
 
-#include "arnoldweb/plan.hpp"
 #include "aw_params.h"
 
 namespace arnoldweb::detail {
@@ -25,16 +24,20 @@ const std::vector<RecordOutput>& record_outputs() {
        {"time_end"}},
       {"indicators", AW_OUT_INDICATORS, AW_F_TANGENT, fixed(AW_IND_REALS), fixed(0), "indicators.h5", "", true,
        {{"fli", false, AW_IND_FLI, 1, "max over the run of log|w(t)|, |w(0)| = 1 (natural log); NaN: trajectory flagged",
-         AW_F_FLI},
+         AW_F_FLI, false, false, 0, "fli.png", "FLI = max log|w|"},
         {"megno", false, AW_IND_MEGNO, 1,
-         "mean MEGNO <Y>(t) at the end of the run (2: regular); NaN: trajectory flagged", AW_F_MEGNO},
+         "mean MEGNO <Y>(t) at the end of the run (2: regular); NaN: trajectory flagged", AW_F_MEGNO, false, false, 0,
+         "megno.png", "mean MEGNO <Y>"},
         {"megno_lyapunov", false, AW_IND_MEGNO_LYAPUNOV, 1,
          "slope of Y(t) against t (Y ~ lambda t): Lyapunov exponent, 1/T; NaN: trajectory flagged", AW_F_MEGNO},
         {"lyapunov", false, AW_IND_LYAPUNOV, 1,
          "log|w(t)| / t at the end of the run: finite-time Lyapunov exponent, 1/T; NaN: trajectory flagged",
          AW_F_LYAPUNOV}},
        "the chaos indicators of every trajectory (FLI, MEGNO, Lyapunov exponents; docs/indicators.md)",
-       {"duration", "tangent_initial"}},
+       {"duration", "tangent_initial"},
+       {{"observe.megno", AW_F_MEGNO, AW_F_TANGENT,
+         "Mean MEGNO <Y> of every trajectory (2 on regular orbits, growing as lambda t / 2 on chaotic ones) and the "
+         "Lyapunov exponent from its slope."}}},
       {"frequencies", AW_OUT_FREQUENCIES, AW_F_FREQUENCIES, fixed(AW_FREQ_REALS), fixed(0), "frequencies.h5", "", true,
        {{"nu_first", false, 0, 3, "the leading frequency of each angle (x, y, z) over the first window, turns per T; "
                                   "NaN: trajectory flagged, or no maximum found"},
@@ -59,6 +62,20 @@ const std::vector<RecordOutput>& record_outputs() {
        "\"file\")"},
   };
   return rows;
+}
+
+std::vector<const OutputSwitch*> output_switches() {
+  std::vector<const OutputSwitch*> all;
+  for (const RecordOutput& r : record_outputs())
+    for (const OutputSwitch& w : r.switches) all.push_back(&w);
+  return all;
+}
+
+std::uint32_t switch_features(const std::set<std::string>& on) {
+  std::uint32_t f = 0;
+  for (const OutputSwitch* w : output_switches())
+    if (on.count(w->key)) f |= w->bit | w->needs;
+  return f;
 }
 
 const RecordOutput* find_record_output(const std::string& name) {
@@ -95,14 +112,3 @@ void lay_out_records(std::uint32_t features, IntParams& ip) {
 }
 
 }  // namespace arnoldweb::detail
-
-namespace arnoldweb {
-
-std::vector<std::string> output_names() {
-  std::vector<std::string> names;
-  for (const detail::RecordOutput& r : detail::record_outputs())
-    if (!r.internal()) names.push_back(r.name);
-  return names;
-}
-
-}  // namespace arnoldweb

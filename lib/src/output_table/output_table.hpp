@@ -9,13 +9,20 @@
 // and the MPI messages carry those arenas, Result splits them into one Records
 // per row, and the writers, the digests in summary.json and Python follow.
 //
+// A row also declares the scene keys that ask for it (switches: the scene
+// layer's key table takes them from here, and the planner's features follow
+// them) and, per dataset, the picture a grid scene draws of it (the pictures
+// plugin loops over those). This table sits below the scene (docs/design.md,
+// "Layers") so that the scene's keys can come from it.
+//
 // Adding a per-trajectory output: a slot in aw_params.h, the device code that
 // writes aw_record_r/aw_record_i(out, ip, slot, rec) (an effect header and its
-// hook), and a row here (docs/design.md, "How to add an output").
+// hook), and a row here (docs/design.md, "Adding an output").
 #pragma once
 
 #include <cstdint>
 #include <functional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -42,6 +49,22 @@ struct RecordDataset {
   bool unwrapped = false;
   bool log10 = false;  // the decimal logarithm of the values (0: -inf)
   int group = 0;       // > 1: the columns grouped by this many (a dataset of shape (n, columns / group, group))
+  // Over a grid of initial conditions (ensemble.initial = "grid"): the picture
+  // file that draws this dataset (a 1-d one) and its colour bar's label ("": none).
+  std::string picture = {}, picture_label = {};
+};
+
+// A boolean scene key that asks for a row (or some of its datasets): set true,
+// it adds its effect's bit and the bits that effect needs to the kernel's
+// features (lib/src/plan/effects.cpp; the effect is named after the key:
+// "observe.<name>" is effect "<name>"). The scene keeps it in Scene::switches;
+// the key table (lib/src/scene/keys.cpp) reads, writes and documents it from here.
+struct OutputSwitch {
+  std::string key;            // "observe.<name>"
+  std::uint32_t bit = 0;      // its effect's AW_F_* bit
+  std::uint32_t needs = 0;    // AW_F_* bits of the effects it needs as well
+  std::string meaning;        // `arnoldweb keys`, docs/scenes.md
+  std::string effect() const { return key.substr(key.find('.') + 1); }
 };
 
 struct RecordOutput {
@@ -58,11 +81,16 @@ struct RecordOutput {
   std::string meaning;        // one line, for docs and `arnoldweb outputs`
   // attributes of the file's root taken from the plan ("duration", "tangent_initial")
   std::vector<std::string> attributes = {};
+  std::vector<OutputSwitch> switches = {};  // the boolean keys that ask for it
   // Kept between launches only (checkpoints), never a result: no file.
   bool internal() const { return file.empty(); }
 };
 
 const std::vector<RecordOutput>& record_outputs();
+// Every row's switches, in table order.
+std::vector<const OutputSwitch*> output_switches();
+// The AW_F_* bits the switches set true (their keys in `on`) ask for.
+std::uint32_t switch_features(const std::set<std::string>& on);
 // The row of a name, or nullptr.
 const RecordOutput* find_record_output(const std::string& name);
 // The rows a kernel with these features writes, in table order.
