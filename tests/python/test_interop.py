@@ -20,7 +20,7 @@ def test_pixel_directions_are_ring_centres(small_scene):
 def test_binned_velocities_lie_on_the_shell_directions(small_scene):
     # each map pixel counts averaged velocities; the averaged velocity of a trajectory that
     # starts on the shell points near its initial momentum on this short run
-    small_scene.set("observe.initial_states", True)
+    small_scene = small_scene.set("observe.initial_states", True)
     r = aw.run(small_scene)
     d = aw.pixel_directions(r.nside)
     p = r.states["initial"]["momentum"]

@@ -72,7 +72,7 @@ def cpu_runs(isa):
 
 def test_every_instruction_set_gives_the_same_bits(small_scene, monkeypatch):
     installed_from_wheel()
-    small_scene.set("observe.final_states", True)
+    small_scene = small_scene.set("observe.final_states", True)
     digests = {}
     for isa in ("x86-64", "x86-64-v3", "x86-64-v4"):
         if not cpu_runs(isa):
