@@ -72,6 +72,15 @@ class Result:
         return self._cached("nside", lambda: self._record.nside(self._part))
 
     @property
+    def map_file(self) -> Optional[str]:
+        """The path of the map as a HEALPix FITS file, ``map.fits`` (written with
+        ``output.formats = ["hdf5", "fits"]``; ``healpy.read_map(result.map_file)`` gives
+        :attr:`map`), once the outputs are written (:meth:`write`, ``run(out=...)``) or for a
+        :func:`arnoldweb.load` of a directory that has it; else None."""
+        folder = self._written_folder()
+        return os.path.join(folder, "map.fits") if folder and "map.fits" in self.summary.get("files", []) else None
+
+    @property
     def ordering(self) -> str:
         """HEALPix pixel ordering of the maps: always "RING"."""
         return "RING"
@@ -206,9 +215,8 @@ class Result:
         summary.json written there, file list included; before, its ``files`` list is empty."""
         if self._saved is not None:
             return self._cache["summary"]
-        written = self._record.written_dir
-        if written:  # read back as render and compare read it: checked (OutputError if damaged)
-            return _core.read_saved_summary(os.path.join(written, self.subdir) if self.subdir else written)
+        if self._record.written_dir:  # read back as render and compare read it: checked (OutputError if damaged)
+            return _core.read_saved_summary(self._written_folder())
         return self._cached("summary", lambda: json.loads(self._record.summary_json(self._part)))
 
     @property
@@ -251,6 +259,15 @@ class Result:
             return list(self._saved["files"])
         return list(self._record.files)
 
+    def _written_root(self) -> str:
+        """Where the job's files were written or loaded from ("" if nowhere)."""
+        return self._saved.get("written_dir", "") if self._saved is not None else self._record.written_dir
+
+    def _written_folder(self) -> str:
+        """Where this part's files were written or loaded from ("" if nowhere)."""
+        root = self._written_root()
+        return os.path.join(root, self.subdir) if root and self.subdir else root
+
     # ---------------------------------------------------------------- output
     def write(self, out: str | os.PathLike[str], force: bool = False) -> List[str]:
         """Writes the output directory ``out`` exactly as ``arnoldweb run --out out`` does
@@ -274,8 +291,7 @@ class Result:
     def _state(self) -> dict:
         """This result (and, for the main run, its panels) as plain values and numpy arrays."""
         parts = [self._values()] + [p._values() for p in self.panels.values()]
-        written = self._saved.get("written_dir", "") if self._saved is not None else self._record.written_dir
-        return {"parts": parts, "files": self.files, "written_dir": written}
+        return {"parts": parts, "files": self.files, "written_dir": self._written_root()}
 
     def __reduce__(self):
         return (_restore, (self._state(),))
