@@ -70,5 +70,7 @@ void add_keys_command(CLI::App& app, Action& action);
 void add_render_command(CLI::App& app, Action& action);
 void add_compare_command(CLI::App& app, Action& action);
 void add_accuracy_command(CLI::App& app, Action& action);
+void add_view_command(CLI::App& app, Action& action);
+void add_serve_command(CLI::App& app, Action& action);
 
 }  // namespace arnoldweb::cli

@@ -39,6 +39,7 @@
 # (1e8 x 5000 steps, Yoshida-6A, double; trajectory-steps/s) and Figure 4's schedule at N = 32,768,
 # the GPU rows of issue 29, each kernel variant of AW_RATES_VARIANTS (name=NVRTC options, ';'
 # between; default: the default kernel only) in turn, AW_RATES_REPEAT rounds (default 2).
+# build: only the program (build-gpu/arnoldweb) and the device list; bench/gpu/campaign.sh builds with it.
 # Needs .device-deps/ (see docs/gpu.md): Debian packages the image lacks and
 # ../shared/gpu/device-setup.sh. Results go to $OUT (default ./gpu-out).
 set -uo pipefail
@@ -66,13 +67,15 @@ fi
 stamp "build"
 targets=""
 [ "$mode" = bench ] && targets="--target arnoldweb-cli arnoldweb_bench"
-[ "$mode" = accuracy ] || [ "$mode" = float ] || [ "$mode" = fgl ] || [ "$mode" = multi ] || [ "$mode" = rates ] &&
+[ "$mode" = accuracy ] || [ "$mode" = float ] || [ "$mode" = fgl ] || [ "$mode" = multi ] || [ "$mode" = rates ] ||
+  [ "$mode" = build ] &&
   targets="--target arnoldweb-cli"
 [ "$mode" = science ] && targets="--target arnoldweb-cli arnoldweb_tests"
 if ! cmake --build build-gpu -j"$(nproc)" $targets >>"$OUT/build.txt" 2>&1; then
   grep -E "error|Error" -A4 "$OUT/build.txt" | head -60; exit 1
 fi
 build-gpu/arnoldweb devices | tee "$OUT/devices.txt"
+if [ "$mode" = build ]; then stamp "built"; exit 0; fi
 first_cuda() {  # the id of the first CUDA device
   build-gpu/arnoldweb devices --json | python3 -c "import json,sys; print(next(d['id'] for d in json.load(sys.stdin) if d['id'].startswith('cuda')))"
 }

@@ -138,4 +138,36 @@ TEST_SUITE("plan") {
       CHECK(largest_chunk(plan, cuda) > 100000);
     }
   }
+
+  // A launch counts a pixel's windows in 32 bits: trajectories x windows binned per launch below
+  // 2^32. A time-sliced launch bins one slice's windows, not the run's: Figure 4 at 10^7 T
+  // (10^6 windows) in slices of 10240 T is one launch of its 32,768 trajectories per slice, where
+  // the bound over the whole run cut it into launches of 4000 (a GPU a fraction full; issue 41).
+  TEST_CASE("largest_chunk: a time slice's windows bound a sliced launch, the run's an unsliced one") {
+    const std::string toml = R"(
+      [ensemble]
+      trajectories = 32768
+      [integrator]
+      method = "yoshida6a"
+      step = 0.01
+      [run]
+      average = 10
+      duration = 10000000
+      [observe]
+      energy_error = { every = 10 }
+      final_states = true
+    )";
+    const Plan whole = make_plan(awtest::scene_from(toml, {}, "<fig4>"));
+    CHECK(whole.windows == 1000000);
+    CHECK(largest_chunk(whole) == 4000);
+    const Plan sliced = make_plan(awtest::scene_from(toml, {"run.slice=10240"}, "<fig4>"));
+    REQUIRE(sliced.slices == 977);
+    CHECK(largest_chunk(sliced) == 32768);
+    // long slices of many trajectories: the slice's windows, and one begun in the slice before
+    const Plan many = make_plan(awtest::scene_from(toml, {"ensemble.trajectories=8000000", "run.slice=81920"}, "<fig4>"));
+    CHECK(largest_chunk(many) == 4000000000ull / 8193);
+    // a slice shorter than a window bins at most one window per launch
+    const Plan thin = make_plan(awtest::scene_from(toml, {"run.slice=20", "run.average=100", "run.duration=200000"}, "<fig4>"));
+    CHECK(largest_chunk(thin) == 32768);
+  }
 }

@@ -3,6 +3,7 @@
 // Data flows one way: Scene -> Plan -> backend -> Result -> writers.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -130,6 +131,12 @@ Plan make_plan(const Scene& scene);
 // allowed).
 Plan with_step(const Plan& plan, double step);
 Plan with_trajectories(const Plan& plan, std::uint64_t trajectories);
+
+// The resonances the maps of this plan are drawn with (map_resonances.png, the
+// explorer): the wave vectors k of the model's harmonics, whose circles k.V = 0
+// are drawn; empty when the model's harmonics make the whole web (the paper's
+// model), whose maps are drawn with every circle m.P = 0 of low order.
+std::vector<std::array<int, 3>> model_resonances(const Plan& plan);
 
 // What a plan needs in memory (estimates from the plan alone, upper bounds).
 struct MemoryEstimate {

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "plan/checks.hpp"
+#include "plan/plan_params.hpp"
 
 namespace arnoldweb::detail {
 namespace {
@@ -210,3 +211,12 @@ void guard_step(const Scene& scene, const ModelDescriptor& model, double omega, 
 }
 
 }  // namespace arnoldweb::detail
+
+namespace arnoldweb {
+
+std::vector<std::array<int, 3>> model_resonances(const Plan& plan) {
+  if (!plan.model || plan.model->overlay_all_resonances || !plan.params) return {};
+  return plan.model->wave_vectors(detail::params(plan).reals);
+}
+
+}  // namespace arnoldweb
