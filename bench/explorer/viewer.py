@@ -77,7 +77,9 @@ def measure(d, url):
 
 cpu = subprocess.run(["lscpu"], capture_output=True, text=True).stdout
 model = next((l.split(":", 1)[1].strip() for l in cpu.splitlines() if l.startswith("Model name")), platform.processor())
-print(f"machine: {model}, {os.cpu_count()} CPUs; chromium {subprocess.run([S.CHROMIUM, '--version'], capture_output=True, text=True).stdout.strip()}")
+browser = (subprocess.run([S.CHROMIUM, "--version"], capture_output=True, text=True).stdout.strip()
+           if shutil.which(S.CHROMIUM) else "absent")
+print(f"machine: {model}, {os.cpu_count()} CPUs; chromium {browser}")
 maps = {"default scene (nside 64)": ("default", []),
         "nside 1024": ("n1024", ["observe.velocity_map.nside=1024", "ensemble.trajectories=200000"])}
 for name, (out, sets) in maps.items():

@@ -6,11 +6,8 @@ namespace arnoldweb::explorer {
 
 PreparedRun prepare_run(const Scene& scene, const std::string& device) {
   PreparedRun p;
-  std::unique_ptr<Backend> pilot;  // integrator.step = "auto": the pilot on the cpu backend, as the CLI
-  p.job = plan_job(scene, [&pilot](const Scene& s) {
-    if (!pilot) pilot = open_backend("cpu");
-    return resolve_step(s, *pilot);
-  });
+  // what the scene takes from outside read first; integrator.step = "auto": the pilot on the cpu backend, as the CLI
+  p.job = plan_job(scene, read_plan_inputs(scene), cpu_pilot());
   p.output.expected_bytes = estimate_output_bytes(p.job);
   const std::uint64_t host = available_memory();
   for (const std::string& id : device_ids(device.empty() ? scene.device : device))

@@ -1,11 +1,8 @@
-// arnoldweb serve: the explorer's page and the runs it was given, over HTTP (cpp-httplib).
-// The server knows runs, not paths: a page names a run by its id, and every answer comes from
-// the embedded page files or from a run read through the library's checked readers when it
-// was registered. Requests are bounded in size; a bad one is answered 4xx with a message and
-// changes nothing. Zooms run through RunQueue.
-#include <httplib.h>
-#include <sys/socket.h>
-
+// arnoldweb serve: the explorer's page and the runs it was given, over HTTP (the transport is
+// http_server.hpp, on Boost.Beast; the routing router.hpp). The server knows runs, not paths: a
+// page names a run by its id, and every answer comes from the embedded page files or from a run
+// read through the library's checked readers when it was registered. Requests are bounded in
+// size; a bad one is answered 4xx with a message and changes nothing. Zooms run through RunQueue.
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -15,6 +12,8 @@
 
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/explorer.hpp"
+#include "http_server.hpp"
+#include "router.hpp"
 #include "run_queue.hpp"
 #include "run_view.hpp"
 #include "web_files.hpp"
@@ -24,12 +23,6 @@ namespace arnoldweb::explorer {
 namespace {
 
 namespace fs = std::filesystem;
-
-void reply(httplib::Response& res, int status, const nlohmann::json& body) {
-  res.status = status;
-  res.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
-}
-void refuse(httplib::Response& res, int status, const std::string& why) { reply(res, status, {{"error", why}}); }
 
 // The runs a server shows, by id: those it was given, the scene it ran, its zooms.
 class Runs {
@@ -102,111 +95,72 @@ int serve(const ServeOptions& o, const std::atomic<bool>& stop, const std::funct
   });
   if (scene_run) queue.submit("s0", std::move(*scene_run), {{"kind", "scene"}, {"run", "r0"}});
 
-  httplib::Server svr;
-  svr.set_payload_max_length(o.max_body);
-  svr.set_read_timeout(5, 0);
-  svr.set_write_timeout(30, 0);
-  svr.set_keep_alive_timeout(2);
-  svr.set_default_headers({{"X-Content-Type-Options", "nosniff"}, {"Cache-Control", "no-store"},
-                           {"Content-Security-Policy", "default-src 'self'; style-src 'self' 'unsafe-inline'; img-src 'self' data: blob:"}});
-  svr.set_pre_routing_handler([](const httplib::Request& req, httplib::Response& res) {
-    if (req.method != "GET" && req.method != "POST" && req.method != "HEAD") {
-      refuse(res, 405, "method " + req.method + " is not served (GET and POST only)");
-      return httplib::Server::HandlerResponse::Handled;
-    }
-    if (!req.params.empty()) {  // everything a page asks is in the path or the body
-      refuse(res, 400, "this server takes no query parameters");
-      return httplib::Server::HandlerResponse::Handled;
-    }
-    return httplib::Server::HandlerResponse::Unhandled;
-  });
-  svr.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
-    if (!res.body.empty()) return;
-    const std::string why = res.status == 404   ? "no such page or run: " + req.path
-                            : res.status == 413 ? "the request is too large"
-                                                : "bad request";
-    refuse(res, res.status, why);
-  });
-  svr.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
-    try {
-      std::rethrow_exception(ep);
-    } catch (const std::exception& e) {
-      refuse(res, 500, std::string("internal error: ") + e.what());
-    } catch (...) {
-      refuse(res, 500, "internal error");
-    }
-  });
-
+  auto reply = [](const nlohmann::json& j) { return json_answer(200, j); };
+  Router api;
   // the page: the embedded files, by exact name
-  svr.Get(R"(/([A-Za-z0-9_-]*(\.[a-z]+)?))", [](const httplib::Request& req, httplib::Response& res) {
-    const std::string name = req.matches[1].str().empty() ? "index.html" : req.matches[1].str();
+  api.get("/:name", [](const Router::Args& a, const HttpRequest&) {
+    const std::string name = a[0].empty() ? "index.html" : a[0];
     const auto f = web_file(name);
-    if (!f) return refuse(res, 404, "no such page file: " + name);
-    res.set_content(std::string(*f), content_type(name).c_str());
+    if (!f) return refusal(404, "no such page file: " + shown(name));
+    return HttpAnswer{200, content_type(name), *f, nullptr};
   });
-  svr.Get("/api/server", [&](const httplib::Request&, httplib::Response& res) {
+  api.get("/api/server", [&](const Router::Args&, const HttpRequest&) {
     nlohmann::json j = {{"zoom", {{"max_trajectories", o.max_trajectories},
                                   {"device", device.empty() ? std::string("the scene's run.device") : device}}}};
     j["scene_run"] = queue.status("s0");
-    reply(res, 200, j);
+    return reply(j);
   });
-  svr.Get("/api/runs", [&](const httplib::Request&, httplib::Response& res) {
-    reply(res, 200, {{"runs", runs.main_metas()}});
+  api.get("/api/runs", [&](const Router::Args&, const HttpRequest&) { return reply({{"runs", runs.main_metas()}}); });
+  api.get("/api/runs/:id", [&](const Router::Args& a, const HttpRequest&) {
+    const auto r = runs.find(a[0]);
+    return r ? reply(r->meta) : refusal(404, "no run " + a[0]);
   });
-  static const std::string id_pattern = "([a-z][0-9]{1,6})";
-  svr.Get("/api/runs/" + id_pattern, [&](const httplib::Request& req, httplib::Response& res) {
-    const auto r = runs.find(req.matches[1]);
-    if (!r) return refuse(res, 404, "no run " + req.matches[1].str());
-    reply(res, 200, r->meta);
+  api.get("/api/runs/:id/map", [&](const Router::Args& a, const HttpRequest&) {
+    const auto r = runs.find(a[0]);
+    if (!r) return refusal(404, "no run " + a[0]);
+    if (r->map_bytes.empty()) return refusal(404, "run " + r->id + " has no velocity map");
+    return HttpAnswer{200, "application/octet-stream", r->map_bytes, r};  // the run's bytes, not a copy
   });
-  svr.Get("/api/runs/" + id_pattern + "/map", [&](const httplib::Request& req, httplib::Response& res) {
-    const auto r = runs.find(req.matches[1]);
-    if (!r) return refuse(res, 404, "no run " + req.matches[1].str());
-    if (r->map_bytes.empty()) return refuse(res, 404, "run " + r->id + " has no velocity map");
-    res.set_content(r->map_bytes, "application/octet-stream");
+  api.get("/api/runs/:id/fields", [&](const Router::Args& a, const HttpRequest&) {
+    const auto r = runs.find(a[0]);
+    return r ? reply(r->fields) : refusal(404, "no run " + a[0]);
   });
-  svr.Get("/api/runs/" + id_pattern + "/fields", [&](const httplib::Request& req, httplib::Response& res) {
-    const auto r = runs.find(req.matches[1]);
-    if (!r) return refuse(res, 404, "no run " + req.matches[1].str());
-    reply(res, 200, r->fields);
-  });
-  svr.Get("/api/compare/" + id_pattern + "/" + id_pattern, [&](const httplib::Request& req, httplib::Response& res) {
-    const auto a = runs.find(req.matches[1]), b = runs.find(req.matches[2]);
-    if (!a || !b) return refuse(res, 404, "no run " + (a ? req.matches[2].str() : req.matches[1].str()));
+  api.get("/api/compare/:id/:id", [&](const Router::Args& a, const HttpRequest&) {
+    const auto x = runs.find(a[0]), y = runs.find(a[1]);
+    if (!x || !y) return refusal(404, "no run " + (x ? a[1] : a[0]));
     try {
-      reply(res, 200, compare_json(*a, *b));
+      return reply(compare_json(*x, *y));
     } catch (const Error& e) {
-      refuse(res, 400, e.what());
+      return refusal(400, e.what());
     }
   });
-  svr.Get("/api/zooms", [&](const httplib::Request&, httplib::Response& res) {
+  api.get("/api/zooms", [&](const Router::Args&, const HttpRequest&) {
     nlohmann::json all = queue.list(), zooms = nlohmann::json::array();
     for (auto& z : all)
       if (z["id"] != "s0") zooms.push_back(z);
-    reply(res, 200, {{"zooms", zooms}});
+    return reply({{"zooms", zooms}});
   });
-  svr.Get("/api/zooms/([a-z][0-9]{1,6})", [&](const httplib::Request& req, httplib::Response& res) {
-    const nlohmann::json s = queue.status(req.matches[1]);
-    if (s.is_null()) return refuse(res, 404, "no zoom " + req.matches[1].str());
-    reply(res, 200, s);
+  api.get("/api/zooms/:id", [&](const Router::Args& a, const HttpRequest&) {
+    const nlohmann::json s = queue.status(a[0]);
+    return s.is_null() ? refusal(404, "no zoom " + a[0]) : reply(s);
   });
-  svr.Post("/api/zooms/([a-z][0-9]{1,6})/cancel", [&](const httplib::Request& req, httplib::Response& res) {
-    if (queue.status(req.matches[1]).is_null()) return refuse(res, 404, "no zoom " + req.matches[1].str());
-    if (!queue.cancel(req.matches[1])) return refuse(res, 409, "zoom " + req.matches[1].str() + " has finished");
-    reply(res, 202, queue.status(req.matches[1]));
+  api.post("/api/zooms/:id/cancel", [&](const Router::Args& a, const HttpRequest&) {
+    if (queue.status(a[0]).is_null()) return refusal(404, "no zoom " + a[0]);
+    if (!queue.cancel(a[0])) return refusal(409, "zoom " + a[0] + " has finished");
+    return json_answer(202, queue.status(a[0]));
   });
-  svr.Post("/api/zooms", [&](const httplib::Request& req, httplib::Response& res) {
+  api.post("/api/zooms", [&](const Router::Args&, const HttpRequest& req) {
     nlohmann::json body;
     try {
       body = nlohmann::json::parse(req.body);
     } catch (const std::exception&) {
-      return refuse(res, 400, "the body is not JSON: {source, region, trajectories}");
+      return refusal(400, "the body is not JSON: {source, region, trajectories}");
     }
     try {
       if (!body.is_object()) throw BadRequest("the body must be a JSON object {source, region, trajectories}");
       if (!body.contains("source") || !body["source"].is_string()) throw BadRequest("source must be a run id");
       const auto source = runs.find(body["source"].get<std::string>());
-      if (!source) return refuse(res, 404, "no run " + body["source"].get<std::string>());
+      if (!source) return refusal(404, "no run " + shown(body["source"].get<std::string>()));
       if (source->counts.empty()) throw BadRequest("run " + source->id + " has no velocity map to zoom into");
       if (!body.contains("trajectories") || !body["trajectories"].is_number_integer() ||
           body["trajectories"].get<std::int64_t>() < 1)
@@ -227,40 +181,32 @@ int serve(const ServeOptions& o, const std::atomic<bool>& stop, const std::funct
       std::lock_guard<std::mutex> lock(zoom_mutex);
       std::error_code ec;
       fs::create_directories(zoom_root, ec);
-      if (ec) return refuse(res, 500, "cannot make " + zoom_root + ": " + ec.message());
+      if (ec) return refusal(500, "cannot make " + zoom_root + ": " + ec.message());
       const std::string dir = first_free(zoom_root, "zoom-", &zoom_counter);
       const std::string id = "z" + std::to_string(zoom_counter);
       PreparedRun run = prepare_run(zoom_scene(source->scene, body["region"], n, nside, dir), device);
       queue.submit(id, std::move(run), {{"kind", "zoom"}, {"source", source->id}, {"region", body["region"]},
                                         {"run", id}, {"dir", dir}});
-      reply(res, 202, queue.status(id));
+      return json_answer(202, queue.status(id));
     } catch (const BadRequest& e) {
-      refuse(res, 400, e.what());
+      return refusal(400, e.what());
     } catch (const Error& e) {  // the scene reader's or the output place's refusal
-      refuse(res, e.exit_code() == 2 ? 400 : 409, e.what());
+      return refusal(e.exit_code() == 2 ? 400 : 409, e.what());
     }
   });
 
-  // cpp-httplib listens with a backlog of 5, so a burst of connections beyond the accepting
-  // thread's pace was dropped and retried by the clients' TCP after seconds: the socket is kept
-  // here and listened on again with the system's largest backlog once bound
-  socket_t listening = -1;
-  svr.set_socket_options([&listening](socket_t fd) {
-    int yes = 1;
-    ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);  // cpp-httplib's default, which this replaces
-    listening = fd;
-  });
-  const int port = o.port == 0 ? svr.bind_to_any_port(o.host) : svr.bind_to_port(o.host, o.port) ? o.port : -1;
-  if (port < 0)
-    throw OutputError(o.host + ":" + std::to_string(o.port), "cannot listen there (in use, or not an address of this machine)");
-  if (listening >= 0) ::listen(listening, SOMAXCONN);
-  std::thread listener([&svr] { svr.listen_after_bind(); });
-  while (!svr.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  HttpLimits limits;
+  limits.max_body = o.max_body;
+  HttpServer server(o.host, o.port, limits,
+                    {{"X-Content-Type-Options", "nosniff"},
+                     {"Cache-Control", "no-store"},
+                     {"Content-Security-Policy", "default-src 'self'; style-src 'self' 'unsafe-inline'; img-src 'self' data: blob:"}},
+                    std::cref(api));
+  server.start();
   if (ready) ready("http://" + (o.host.find(':') != std::string::npos ? "[" + o.host + "]" : o.host) + ":" +
-                   std::to_string(port) + "/");
+                   std::to_string(server.port()) + "/");
   while (!stop.load()) std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  svr.stop();
-  listener.join();
+  server.stop();
   const std::string note = queue.shutdown();
   if (!note.empty()) std::cerr << "arnoldweb: " << note << "\n";
   return note.empty() ? 0 : 130;

@@ -46,8 +46,7 @@ Scene zoom_scene(const Scene& source, const nlohmann::json& region, std::uint64_
   std::vector<std::string> sets = region_overrides(region);
   sets.push_back("ensemble.trajectories=" + std::to_string(trajectories));
   if (nside) sets.push_back("observe.velocity_map.nside=" + std::to_string(nside));
-  nlohmann::json dir = out_dir;
-  sets.push_back("output.dir=" + dir.dump());
+  sets.push_back(string_override("output.dir", out_dir, "the zoom's directory " + out_dir));
   // the scene reader checks every value, as for a scene file; the text it keeps (to_toml with
   // the overrides applied) is what summary.json records
   const Scene parsed = parse_scene(s.to_toml(), "zoom of " + source.output_dir, sets);

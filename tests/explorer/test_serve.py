@@ -1,7 +1,8 @@
 """arnoldweb serve: the same page over HTTP (no console error; the values it reports are
 map.h5's); the server under load and attack (1,000 concurrent requests and 200 malformed or
 hostile ones: path traversal, huge bodies, bad JSON, unknown runs, bad methods), all answered in
-bounded time with 4xx and a message, nothing outside the runs read or written; a zoom asked
+bounded time with 4xx and a message, nothing outside the runs read or written; 50 slow clients
+(slowloris) hold up no other request and are closed; the program links no TLS library; a zoom asked
 for through the page runs, appears as a layer, and its directory's scene, run again with
 arnoldweb run, gives the same digests; a cancelled zoom leaves no directory; a refused one
 changes nothing; Ctrl-C stops the server with a zoom running, checkpointed for arnoldweb resume;
@@ -12,6 +13,7 @@ import http.client
 import json
 import os
 import re
+import shutil
 import signal
 import socket
 import subprocess
@@ -85,6 +87,14 @@ def wait_zoom(port, zid, timeout=300):
         time.sleep(0.2)
     raise AssertionError(f"zoom {zid} did not finish in {timeout} s")
 
+
+# the server is plain HTTP on Boost.Beast: the program links no TLS or crypto library itself
+# (a library's own dependencies, libhdf5's, are not the server's)
+if shutil.which("readelf"):
+    elf = subprocess.run(["readelf", "-d", args.cli], capture_output=True, text=True, check=True).stdout
+    needed = re.findall(r"\(NEEDED\)\s+Shared library: \[([^]]+)\]", elf)
+    check(needed and not [n for n in needed if n.startswith(("libssl", "libcrypto", "libcurl", "libcpp-httplib", "libgnutls"))],
+          f"arnoldweb links no TLS or HTTP client library: {needed}")
 
 zooms = os.path.join(args.work, "zooms")
 p, port = start(run_a, "--zooms", zooms, "--max-trajectories", "200000")
@@ -264,6 +274,49 @@ try:
           f"nothing outside the zooms was written: {set(after) ^ set(outside)}")
     status, text = request(port, "GET", "/api/runs")
     check(status == 200 and len(json.loads(text)["runs"]) == 1, "the server still serves after all that")
+    status, text = request(port, "HEAD", "/api/runs/r0/map")
+    check(status == 200 and text == b"", f"HEAD is answered without the body: {status} {len(text)} bytes")
+
+    # ---------------------------------------------------------------- slow clients (slowloris)
+    # 50 connections that each send a header line a second hold nothing up: other requests are
+    # answered meanwhile, and the server closes each slow one when its time for a request is up
+    slow = []
+    for _ in range(50):
+        s = socket.create_connection(("127.0.0.1", port), timeout=10)
+        s.sendall(b"GET / HTTP/1.1\r\nHost: x\r\n")
+        slow.append(s)
+    closed_after = {}
+
+    def trickle(i):
+        t0 = time.time()
+        try:
+            while time.time() - t0 < 30:
+                slow[i].sendall(b"X-Slow: 1\r\n")
+                slow[i].settimeout(1.0)
+                try:
+                    if slow[i].recv(4096) == b"":
+                        break
+                except socket.timeout:
+                    pass
+        except OSError:  # reset by the server
+            pass
+        closed_after[i] = time.time() - t0
+        slow[i].close()
+
+    with cf.ThreadPoolExecutor(max_workers=50) as pool:
+        waiting = [pool.submit(trickle, i) for i in range(50)]
+        worst = 0.0
+        for _ in range(20):
+            t0 = time.time()
+            status, _ = request(port, "GET", "/api/runs", timeout=20)
+            worst = max(worst, time.time() - t0)
+            check(status == 200, f"a request among slow clients is answered: {status}")
+            time.sleep(0.2)
+        cf.wait(waiting)
+    check(worst < 5, f"requests among 50 slow clients are answered at once (slowest {worst:.2f} s)")
+    check(max(closed_after.values()) < 15, f"the slow clients are closed within 15 s ({max(closed_after.values()):.1f} s)")
+    print(f"slowloris: 50 slow clients closed after {min(closed_after.values()):.1f}-{max(closed_after.values()):.1f} s; "
+          f"other requests meanwhile at most {worst:.3f} s", flush=True)
 
     # ---------------------------------------------------------------- Ctrl-C with a zoom running
     status, text = request(port, "POST", "/api/zooms",

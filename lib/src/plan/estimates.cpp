@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "arnoldweb/device.hpp"
+#include "arnoldweb/device_info.hpp"
 #include "arnoldweb/plan.hpp"
 #include "aw_params.h"
 #include "plan/checks.hpp"
