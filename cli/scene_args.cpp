@@ -1,12 +1,33 @@
+#include <filesystem>
+
 #include "arnoldweb/accuracy.hpp"
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/inputs.hpp"
 #include "command.hpp"
 
 namespace arnoldweb::cli {
+namespace {
+
+// `arnoldweb run default`: where no file of that name exists, a bare name is
+// the scene of that name that comes with arnoldweb, in the scenes/ folder
+// beside the program's folder (a wheel: arnoldweb/bin/../scenes; a build in
+// the source tree: build/../scenes).
+std::string scene_file_or_shipped(const std::string& arg) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const bool bare = arg.find('/') == std::string::npos && fs::path(arg).extension() != ".toml";
+  if (arg.empty() || !bare || fs::exists(arg, ec)) return arg;
+  const fs::path shipped = fs::read_symlink("/proc/self/exe", ec).parent_path().parent_path() / "scenes" / (arg + ".toml");
+  return !ec && fs::is_regular_file(shipped, ec) ? shipped.string() : arg;
+}
+
+}  // namespace
 
 void add_scene_options(CLI::App* c, SceneArgs& a) {
-  c->add_option("scene", a.scene, "Scene file (TOML); see docs/scenes.md")->required();
+  c->add_option("scene", a.scene, "Scene file (TOML), or the name of a scene that comes with arnoldweb "
+                                  "(default, fig3_e15, ...: scenes/); see docs/scenes.md")
+      ->required()
+      ->transform([](std::string arg) { return scene_file_or_shipped(arg); }, "", "");
   c->add_option("--device,-d", a.device, "Device: cpu, opencl:N, cuda:N, auto, all (every GPU) or a list cuda:0,cuda:1 (overrides run.device)");
   c->add_option("--set,-s", a.sets, "Override a scene key, e.g. --set integrator.step=0.005 (repeatable)")
       ->allow_extra_args(false);

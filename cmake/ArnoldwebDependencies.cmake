@@ -10,6 +10,8 @@ find_package(PkgConfig REQUIRED)
 # library still runs and writes data, and `arnoldweb render` can draw the
 # pictures later on a machine that has it.
 pkg_check_modules(CAIRO IMPORTED_TARGET cairo)
+# CFITSIO writes map.fits, the HEALPix FITS map (output.formats; Debian: libcfitsio-dev)
+pkg_check_modules(CFITSIO REQUIRED IMPORTED_TARGET cfitsio)
 find_path(XXHASH_INCLUDE_DIR xxhash.h DOC "xxHash (Debian: libxxhash-dev)" REQUIRED)
 find_library(XXHASH_LIBRARY xxhash DOC "xxHash (Debian: libxxhash-dev)" REQUIRED)
 add_library(arnoldweb_xxhash INTERFACE IMPORTED)

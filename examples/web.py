@@ -82,7 +82,7 @@ def main(argv=None):
 
     scene = aw.Scene.from_file(a.scene)
     if a.trajectories:
-        scene.set("ensemble.trajectories", a.trajectories)
+        scene = scene.set("ensemble.trajectories", a.trajectories)
     result = aw.run(scene, device=a.device, progress=sys.stderr.isatty())
     title = (f"Arnold web, E = {scene['model.energy']:g}: {result.binned} trajectories "
              f"(nside {result.nside}, {result.device['id']})")

@@ -36,4 +36,10 @@ if command -v ccache >/dev/null 2>&1; then
 fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "${cuda_args[@]}" "${launcher_args[@]}" "$@"
-cmake --build build -j"$(nproc)"
+# ARNOLDWEB_BUILD_TARGETS="a b": only those (the ones this configuration has), e.g.
+# scripts/run-default.sh's program and pictures' plugin; else everything
+targets=()
+for t in ${ARNOLDWEB_BUILD_TARGETS:-}; do
+  ninja -C build -t query "$t" >/dev/null 2>&1 && targets+=(--target "$t")
+done
+cmake --build build -j"$(nproc)" "${targets[@]}"

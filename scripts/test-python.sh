@@ -37,11 +37,13 @@ reached=1
 "$python" -m pip download -q --no-deps -d "$probe" pytest >/dev/null 2>&1 || reached=0
 rm -rf "$probe"
 [ $reached = 1 ] || skip "pip cannot reach PyPI for the build and test tools (no network?)"
+"$python" -c 'import urllib.request; urllib.request.urlopen("http://deb.debian.org/debian/", timeout=20)' 2>/dev/null \
+  || skip "deb.debian.org cannot be reached for the sources of the wheel's HDF5 and CFITSIO (scripts/wheel-deps.sh)"
 
 start=$SECONDS
 mkdir -p build-python
 log=build-python/build-wheel.log
-if ! WHEEL_DIR="$root/build-python/dist" PYTHON="$python" scripts/build-wheel.sh >"$log" 2>&1; then
+if ! WHEEL_DIR="$root/build-python/dist" PYTHONS="$python" scripts/build-wheel.sh >"$log" 2>&1; then
   tail -n 60 "$log"
   echo "test-python: FAILED: scripts/build-wheel.sh (the whole log: $log)"
   exit 1

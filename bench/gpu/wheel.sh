@@ -17,9 +17,7 @@ mkdir -p "$OUT"
 python=${PYTHON:-python3}
 echo "machine: $(. /etc/os-release && echo "$PRETTY_NAME"), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2), $(nproc) cores"
 echo "python: $("$python" -c 'import sys; print(sys.version.split()[0], sys.executable)')"
-tag=$("$python" -c 'import sys; v = sys.version_info; print(f"cp{v[0]}{v[1]}-cp{v[0]}{v[1]}")')
-wheel=$(ls "$dir"/arnoldweb-*-"$tag"-*.whl 2>/dev/null | head -n 1)
-[ -n "$wheel" ] || { echo "wheel: no arnoldweb wheel for $tag in $dir (bench/gpu/prepare-wheel.sh)"; ls "$dir"; exit 1; }
+ls "$dir"/arnoldweb-*.whl >/dev/null 2>&1 || { echo "wheel: no arnoldweb wheels in $dir (bench/gpu/prepare-wheel.sh)"; exit 1; }
 # NVIDIA's OpenCL driver, registered with the ICD loader (the image ships only PoCL's)
 if [ ! -f /etc/OpenCL/vendors/nvidia.icd ] && ldconfig -p | grep -q libnvidia-opencl.so.1; then
   mkdir -p /etc/OpenCL/vendors && echo libnvidia-opencl.so.1 > /etc/OpenCL/vendors/nvidia.icd \
@@ -31,11 +29,13 @@ echo "system libraries the wheel uses: $(ldconfig -p | grep -oE '(libX11\.so\.6|
 venv=$(mktemp -d /tmp/aw-wheel-venv.XXXXXX)
 "$python" -m venv "$venv"
 t0=$(date +%s.%N)
-"$venv/bin/python" -m pip --disable-pip-version-check install -q --no-index --find-links "$dir" "$wheel"
+# pip picks the wheel of this Python from the wheelhouse (3.12: cp312-abi3)
+"$venv/bin/python" -m pip --disable-pip-version-check install -q --no-index --find-links "$dir" arnoldweb
 rc=$?
 t1=$(date +%s.%N)
 install_s=$(python3 -c "print(f'{$t1 - $t0:.1f}')")
-echo "install: pip install $(basename "$wheel") (and numpy from $dir) into a fresh venv: ${install_s} s (exit $rc)"
+picked=$("$venv/bin/python" -c 'import importlib.metadata as m; print([l for l in [f for f in m.files("arnoldweb") if f.name == "WHEEL"][0].read_text().splitlines() if l.startswith("Tag")][0])' 2>/dev/null)
+echo "install: pip install --no-index --find-links $dir arnoldweb (and numpy) into a fresh venv: ${install_s} s (exit $rc), $picked"
 [ $rc = 0 ] || exit 1
 "$venv/bin/python" -m pip list 2>/dev/null | grep -Ei "^(arnoldweb|numpy) "
 

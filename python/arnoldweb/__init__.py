@@ -5,7 +5,7 @@ The Python interface to the arnoldweb C++ library (the same library as the
 compute on its devices (cpu, OpenCL, CUDA) and return numpy arrays.
 
     import arnoldweb as aw
-    scene = aw.Scene.from_file("scenes/default.toml").set("ensemble.trajectories", 20000)
+    scene = aw.scene("default").set("ensemble.trajectories", 20_000)
     result = aw.run(scene, progress=True)
     result.map          # HEALPix RING counts, nside = result.nside
     result.write("out/py")
@@ -18,6 +18,7 @@ from . import _arnoldweb as _core
 from ._errors import BuildError, DeviceError, Error, OutputError, OutputRefused, PlanWarning, SceneError, StateError
 from ._result import COUNTER_NAMES, INDICATOR_NAMES, Result
 from ._explorer import serve, view
+from ._model import energy, potential, shell_momenta
 from ._run import accuracy, check_states, continue_run, run
 from ._saved import load
 from ._scene import Scene
@@ -25,7 +26,8 @@ from ._scenes import scene, scenes
 
 __version__: str = _core.__version__
 
-__all__ = ["Scene", "Result", "run", "continue_run", "load", "view", "serve", "scene", "scenes", "accuracy", "check_states", "devices", "methods",
+__all__ = ["Scene", "Result", "run", "continue_run", "load", "view", "serve", "scene", "scenes", "accuracy", "check_states",
+           "potential", "energy", "shell_momenta", "devices", "methods",
            "scene_keys", "backend_problems", "default_device", "pixel_directions", "resonances", "compare_maps", "Error",
            "SceneError", "DeviceError", "BuildError", "OutputError", "OutputRefused", "PlanWarning", "StateError",
            "COUNTER_NAMES", "INDICATOR_NAMES", "__version__"]
@@ -57,14 +59,25 @@ def backend_problems() -> list:
 
 def pixel_directions(nside: int):
     """Unit vectors to the HEALPix RING pixel centres, a float64 array of shape (12 nside², 3):
-    row i is the direction that ``result.map[i]`` counts (the library's own pix2vec)."""
-    return _core.pixel_directions(nside)
+    row i is the direction that ``result.map[i]`` counts (the library's own pix2vec). ``nside``
+    is a power of two from 1 to 8192 (a float with a whole value, such as 2.0, is taken as one)."""
+    return _core.pixel_directions(_whole_number(nside, "nside"))
 
 
 def resonances(max_order: int) -> list:
     """The resonances m·P = 0 with max |m_i| <= max_order, lowest order first, as dicts
     (m, order, label): each is the great circle of directions P with m·P = 0."""
-    return _core.resonances(max_order)
+    return _core.resonances(_whole_number(max_order, "max_order"))
+
+
+def _whole_number(value, name: str) -> int:
+    """An integer argument: an int, a numpy integer, or a float with a whole value (2.0)."""
+    import numbers
+    if isinstance(value, numbers.Integral) and not isinstance(value, bool):
+        return int(value)
+    if isinstance(value, numbers.Real) and float(value).is_integer():
+        return int(value)
+    raise TypeError(f"{name} must be a whole number, not {value!r}")
 
 
 def compare_maps(a, b, min_count: float = 5) -> dict:
@@ -114,3 +127,4 @@ def _counts(values, name: str):
 def default_device() -> str:
     """The device id that run.device = "auto" resolves to on this machine."""
     return _core.default_device()
+

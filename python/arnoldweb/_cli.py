@@ -14,4 +14,6 @@ def main() -> None:
     path = executable()
     if not os.access(path, os.X_OK):
         sys.exit(f"arnoldweb: the command-line program is not part of this installation ({path})")
-    os.execv(path, [path] + sys.argv[1:])
+    # argv[0] "arnoldweb": the usage and error lines name the command as it was typed, not the
+    # program's place inside the installation
+    os.execv(path, ["arnoldweb"] + sys.argv[1:])

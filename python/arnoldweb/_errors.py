@@ -112,3 +112,9 @@ class StateError(Error, ValueError):
         self.dataset = dataset
         self.row = row
         self.reason = reason or message
+
+
+# Tracebacks and reprs name them as users import them (arnoldweb.SceneError), not by this module.
+for _public in (PlanWarning, Error, SceneError, DeviceError, BuildError, OutputError, OutputRefused, StateError):
+    _public.__module__ = "arnoldweb"
+del _public

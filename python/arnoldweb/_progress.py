@@ -7,15 +7,35 @@ from typing import Callable, Optional
 ProgressCallback = Callable[[int, int, float], None]
 
 
+def _tqdm():
+    """tqdm's bar class: the notebook widget where a notebook can show it (Jupyter with
+    ipywidgets), else the text bar (which a notebook shows as text); None without tqdm."""
+    try:
+        from tqdm.std import tqdm
+    except ImportError:
+        return None
+    if _in_notebook():
+        try:
+            import ipywidgets  # noqa: F401  (tqdm.notebook needs it, and warns without it)
+            from tqdm.notebook import tqdm as widget
+            return widget
+        except ImportError:
+            pass
+    return tqdm
+
+
+def _in_notebook() -> bool:
+    """Running in a Jupyter kernel (the one place tqdm's widget bar can be drawn)."""
+    shell = sys.modules.get("IPython")
+    get = getattr(shell, "get_ipython", None)
+    return bool(get and get() is not None and "IPKernelApp" in getattr(get(), "config", {}))
+
+
 class _Bar:
     """progress=True: one bar per part of the job (a new part starts again at 0)."""
 
     def __init__(self) -> None:
-        try:
-            from tqdm.auto import tqdm
-        except ImportError:
-            tqdm = None
-        self._tqdm = tqdm
+        self._tqdm = _tqdm()
         self._bar = None
         self._last = (0, 0)
         self._part = 0

@@ -59,16 +59,26 @@ class Result:
 
     # ------------------------------------------------------------------ maps
     @property
-    def map(self) -> Optional[np.ndarray]:
+    def map(self) -> np.ndarray:
         """The velocity map: counts of binned windows per HEALPix pixel in RING order,
-        shape (12 nside²,), dtype uint64 (None without observe.velocity_map).
-        ``healpy.mollview(result.map)`` draws it."""
-        return self._cached("map", lambda: self._record.map(self._part))
+        shape (12 nside²,), dtype uint64; ``healpy.mollview(result.map)`` draws it. Without
+        observe.velocity_map it is empty, shape (0,), as its nside is 0 (``result.map.sum()``
+        is then 0)."""
+        return self._cached("map", lambda: _empty_if_none(self._record.map(self._part)))
 
     @property
     def nside(self) -> int:
         """HEALPix nside of :attr:`map` (0 without a map)."""
         return self._cached("nside", lambda: self._record.nside(self._part))
+
+    @property
+    def map_file(self) -> Optional[str]:
+        """The path of the map as a HEALPix FITS file, ``map.fits`` (written with
+        ``output.formats = ["hdf5", "fits"]``; ``healpy.read_map(result.map_file)`` gives
+        :attr:`map`), once the outputs are written (:meth:`write`, ``run(out=...)``) or for a
+        :func:`arnoldweb.load` of a directory that has it; else None."""
+        folder = self._written_folder()
+        return os.path.join(folder, "map.fits") if folder and "map.fits" in self.summary.get("files", []) else None
 
     @property
     def ordering(self) -> str:
@@ -150,9 +160,12 @@ class Result:
 
     @property
     def energy(self) -> dict:
-        """Energy error statistics: tracked, max, mean, median_upper_bound, p99_upper_bound and
-        log_hist (the quarter-octave histogram of max|dE| over all trajectories)."""
-        return self._cached("energy", lambda: self._record.energy(self._part))
+        """Energy error statistics: tracked, max, mean, median_upper_bound, p99_upper_bound,
+        log_hist (the quarter-octave histogram of max|dE| over all trajectories, uint64) and
+        log_hist_edges (its bin edges, float64, one more than the bins: bin i counts
+        ``log_hist_edges[i] <= max|dE| < log_hist_edges[i + 1]``, the first from 0 to 2^-64, the
+        last from 2^16 to inf; ``matplotlib.pyplot.stairs(e["log_hist"], e["log_hist_edges"])``)."""
+        return self._cached("energy", lambda: _with_edges(self._record.energy(self._part)))
 
     @property
     def trajectories(self) -> int:
@@ -202,9 +215,8 @@ class Result:
         summary.json written there, file list included; before, its ``files`` list is empty."""
         if self._saved is not None:
             return self._cache["summary"]
-        written = self._record.written_dir
-        if written:  # read back as render and compare read it: checked (OutputError if damaged)
-            return _core.read_saved_summary(os.path.join(written, self.subdir) if self.subdir else written)
+        if self._record.written_dir:  # read back as render and compare read it: checked (OutputError if damaged)
+            return _core.read_saved_summary(self._written_folder())
         return self._cached("summary", lambda: json.loads(self._record.summary_json(self._part)))
 
     @property
@@ -232,7 +244,7 @@ class Result:
         return "" if self._part == 0 else f"panel-{self.name}"
 
     @property
-    def panels(self) -> Dict[str, "Result"]:
+    def panels(self) -> Dict[str, Result]:
         """The results of the scene's [[panel]] runs, by name (those that ran)."""
         if self._part != 0:
             return {}
@@ -247,8 +259,17 @@ class Result:
             return list(self._saved["files"])
         return list(self._record.files)
 
+    def _written_root(self) -> str:
+        """Where the job's files were written or loaded from ("" if nowhere)."""
+        return self._saved.get("written_dir", "") if self._saved is not None else self._record.written_dir
+
+    def _written_folder(self) -> str:
+        """Where this part's files were written or loaded from ("" if nowhere)."""
+        root = self._written_root()
+        return os.path.join(root, self.subdir) if root and self.subdir else root
+
     # ---------------------------------------------------------------- output
-    def write(self, out: "str | os.PathLike[str]", force: bool = False) -> List[str]:
+    def write(self, out: str | os.PathLike[str], force: bool = False) -> List[str]:
         """Writes the output directory ``out`` exactly as ``arnoldweb run --out out`` does
         (summary.json, map.h5, states.h5, pictures, panel-<name>/, figure.png), through the
         library's output code: files are made in a staging directory and moved into place; an
@@ -270,24 +291,78 @@ class Result:
     def _state(self) -> dict:
         """This result (and, for the main run, its panels) as plain values and numpy arrays."""
         parts = [self._values()] + [p._values() for p in self.panels.values()]
-        written = self._saved.get("written_dir", "") if self._saved is not None else self._record.written_dir
-        return {"parts": parts, "files": self.files, "written_dir": written}
+        return {"parts": parts, "files": self.files, "written_dir": self._written_root()}
 
     def __reduce__(self):
         return (_restore, (self._state(),))
 
-    def __copy__(self) -> "Result":
+    def __copy__(self) -> Result:
         return self
 
-    def __deepcopy__(self, memo: dict) -> "Result":
+    def __deepcopy__(self, memo: dict) -> Result:
         import copy
         return _restore(copy.deepcopy(self._state(), memo))
+
+    def __eq__(self, other: object) -> bool:
+        """Results are equal when they hold the same numbers: the maps, frames and zoom, every
+        per-trajectory output (through their digests), the counts, the energy statistics,
+        whether the run was interrupted, and the panels. Where and how fast a run went (device,
+        wall_seconds, rate, summary) is not compared: a run, its pickle, its :func:`load`
+        and the same scene run on another device (the same bits) are equal."""
+        if not isinstance(other, Result):
+            return NotImplemented
+        return _same(self._numbers(), other._numbers())
+
+    __hash__ = None  # type: ignore[assignment]  # equal results need not be the same object
+
+    def _numbers(self) -> dict:
+        """What == compares."""
+        energy = {k: v for k, v in self.energy.items() if k in ("tracked", "max", "mean", "log_hist")}
+        return {"map": self.map, "frames": self.frames, "zoom": self.zoom, "counters": self.counters,
+                "digests": self.digests, "energy": energy, "interrupted": self.interrupted, "name": self.name,
+                "title": self.title, "panels": {k: p._numbers() for k, p in self.panels.items()}}
 
     def __repr__(self) -> str:
         what = f"panel {self.name!r}" if self._part else "run"
         stop = ", interrupted" if self.interrupted else ""
+        sphere = f"nside {self.nside}" if self.nside else "no velocity map"
         return (f"<arnoldweb.Result {what}: {self.completed}/{self.trajectories} trajectories, "
-                f"{self.binned} binned, nside {self.nside}{stop}>")
+                f"{self.binned} binned, {sphere}{stop}>")
+
+
+Result.__module__ = "arnoldweb"
+
+
+def _empty_if_none(values: Optional[np.ndarray]) -> np.ndarray:
+    """A map as an array: the empty map of nside 0 (shape (0,)) for a run without one."""
+    if values is not None:
+        return values
+    empty = np.zeros(0, dtype=np.uint64)
+    empty.flags.writeable = False
+    return empty
+
+
+def _with_edges(energy: dict) -> dict:
+    """The energy statistics with the histogram's bin edges (and the histogram as uint64)."""
+    if "log_hist" in energy:
+        energy["log_hist"] = np.asarray(energy["log_hist"], dtype=np.uint64)
+        energy["log_hist_edges"] = _core._energy_hist_edges()
+    return energy
+
+
+def _same(a: Any, b: Any) -> bool:
+    """Equal values, arrays compared element by element (NaN equal to NaN, dtypes and shapes equal)."""
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        if not (isinstance(a, np.ndarray) and isinstance(b, np.ndarray)) or a.shape != b.shape or a.dtype != b.dtype:
+            return False
+        if a.dtype.names:
+            return all(_same(a[n], b[n]) for n in a.dtype.names)
+        return bool(np.array_equal(a, b, equal_nan=a.dtype.kind in "fc"))
+    if isinstance(a, dict) and isinstance(b, dict):
+        return a.keys() == b.keys() and all(_same(a[k], b[k]) for k in a)
+    if isinstance(a, float) and isinstance(b, float) and a != a and b != b:
+        return True
+    return bool(a == b)
 
 
 def _read_only(value: Any) -> Any:

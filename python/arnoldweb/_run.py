@@ -10,27 +10,46 @@ from . import _arnoldweb as _core
 from ._progress import make_progress
 from ._result import Result
 from ._scene import Scene
+from ._scenes import scene_or_file
 
-__all__ = ["run", "continue_run", "accuracy", "check_states"]
+__all__ = ["run", "continue_run", "accuracy", "check_states", "scene_of"]
 
 SceneLike = Union[Scene, str, "os.PathLike[str]"]
 
 
-def _scene_of(scene: SceneLike) -> Scene:
+def scene_of(scene: SceneLike) -> Scene:
+    """A copy of a Scene, or the scene of a path or of a shipped scene's name ("default")."""
     if isinstance(scene, Scene):
         return scene.copy()
     if isinstance(scene, (str, os.PathLike)):
-        return Scene.from_file(scene)
-    raise TypeError(f"scene must be an arnoldweb.Scene or a path, not {type(scene).__name__}")
+        return scene_or_file(scene)
+    raise TypeError(f"scene must be an arnoldweb.Scene, a scene file or a shipped scene's name, "
+                    f"not {type(scene).__name__}")
+
+
+def _on_device(s: Scene, device: Optional[str]) -> None:
+    """device= applied to the scene (as --device); "all" on a machine without a GPU said (PlanWarning)."""
+    if device is not None:
+        s._apply(f"run.device={_quote(device)}", f"device={device!r}")
+    if s["run.device"] == "all" and not any(not d["is_cpu"] for d in _core.devices()):
+        import warnings
+        from ._errors import PlanWarning
+        warnings.warn(f'device "all" runs on every GPU, and this machine has none: the run uses the default device, '
+                      f'{_core.default_device()} (aw.backend_problems() says why a backend has no device)',
+                      PlanWarning, stacklevel=3)
 
 
 def run(scene: SceneLike, device: Optional[str] = None,
-        progress: "bool | Callable[[int, int, float], None] | None" = None,
-        out: "str | os.PathLike[str] | None" = None, force: bool = False,
-        initial: "tuple | None" = None, units: str = "radians") -> Result:
+        progress: bool | Callable[[int, int, float], None] | None = None,
+        out: str | os.PathLike[str] | None = None, force: bool = False,
+        initial: tuple | None = None, units: str = "radians") -> Result:
     """Runs a scene (and its [[panel]] runs) and returns the main run's :class:`Result`.
 
-    - ``device``: "cpu", "opencl:N", "cuda:N", "auto", "all" (every GPU) or a list such as
+    ``scene`` is a :class:`Scene`, a scene file or the name of a shipped scene
+    (``run("default")``, :func:`scenes`).
+
+    - ``device``: "cpu", "opencl:N", "cuda:N", "auto", "all" (every GPU; on a machine without
+      one a PlanWarning says that the default device runs it) or a list such as
       "cuda:0,cuda:1" (one thread per device, the same bits as one device), as ``--device``;
       None: run.device.
     - ``initial``: the initial states as ``(X, P)``, two arrays of shape (N, 3): positions in
@@ -49,12 +68,11 @@ def run(scene: SceneLike, device: Optional[str] = None,
     computed (and, with ``out``, was written); an exception raised by the progress callback
     stops it the same way. Raises SceneError, DeviceError, BuildError, OutputError, StateError.
     """
-    s = _scene_of(scene)
-    if device is not None:
-        s._apply(f"run.device={_quote(device)}", f"device={device!r}")
+    s = scene_of(scene)
+    _on_device(s, device)
     x = p = None
     if initial is not None:
-        x, p = (np.ascontiguousarray(a, dtype=np.float64) for a in _pair(initial))
+        x, p = _state_arrays(*_pair(initial))
     if out is not None:
         out = os.fspath(out)
         if out == "":
@@ -79,10 +97,10 @@ def run(scene: SceneLike, device: Optional[str] = None,
     return result
 
 
-def continue_run(out_dir: "str | os.PathLike[str]", duration: float, device: Optional[str] = None,
-                 progress: "bool | Callable[[int, int, float], None] | None" = None,
-                 out: "str | os.PathLike[str] | None" = None, force: bool = False,
-                 sets: "dict | None" = None) -> Result:
+def continue_run(out_dir: str | os.PathLike[str], duration: float, device: Optional[str] = None,
+                 progress: bool | Callable[[int, int, float], None] | None = None,
+                 out: str | os.PathLike[str] | None = None, force: bool = False,
+                 sets: dict | None = None) -> Result:
     """Goes on from where a finished run ended, as ``arnoldweb continue OUT_DIR --for DURATION``:
     the run's scene as it ran (summary.json's ``scene_toml``), its trajectories started from the
     final states, windings and time of its ``states.h5`` (checked against the size and digest
@@ -111,6 +129,19 @@ def _pair(initial) -> tuple:
     return initial[0], initial[1]
 
 
+def _state_arrays(positions, momenta) -> tuple:
+    """X and P as contiguous float64 of shape (N, 3), or StateError giving the shape as numpy has it."""
+    arrays = []
+    for name, a in (("X", positions), ("P", momenta)):
+        a = np.ascontiguousarray(a, dtype=np.float64)
+        if a.ndim != 2:
+            from ._errors import StateError
+            reason = f"has the shape {a.shape}; it must be (N, 3) with N >= 1, one row per state"
+            raise StateError(f"initial: {name}: {reason}", source="initial", dataset=name, reason=reason)
+        arrays.append(a)
+    return tuple(arrays)
+
+
 def check_states(scene: SceneLike, positions, momenta, units: str = "radians") -> dict:
     """Checks initial states given as arrays against the scene's model, with the rules of a
     state file (docs/outputs.md, "State files"): ``positions`` and ``momenta`` of shape (N, 3)
@@ -118,9 +149,8 @@ def check_states(scene: SceneLike, positions, momenta, units: str = "radians") -
     value finite, positions within 2^52 turns, and each state's energy H = T(P) + V(X) within 1%
     of max(|E|, max V - min V) of model.energy. Returns a dict: count, energy (H of each state,
     a numpy array), energy_min, energy_max. Raises StateError naming the array and the row."""
-    x = np.ascontiguousarray(positions, dtype=np.float64)
-    p = np.ascontiguousarray(momenta, dtype=np.float64)
-    return _core._check_states(_scene_of(scene)._scene, x, p, units)
+    x, p = _state_arrays(positions, momenta)
+    return _core._check_states(scene_of(scene)._scene, x, p, units)
 
 
 def _quote(text: str) -> str:
@@ -136,9 +166,8 @@ def accuracy(scene: SceneLike, target: Optional[float] = None, device: Optional[
     ``arnoldweb accuracy`` does (docs/accuracy.md). Returns the report as a dict: device,
     pilot_*, fits (per method: points of step, max, median), as_written, best, per_method,
     found, why_not. Computes only the pilot; writes nothing."""
-    s = _scene_of(scene)
-    if device is not None:
-        s._apply(f"run.device={_quote(device)}", f"device={device!r}")
+    s = scene_of(scene)
+    _on_device(s, device)
     if target is not None and not (0 < target < 1):
         raise ValueError(f"target must be greater than 0 and less than 1, got {target}")
     if not 1 <= safety <= 1000:

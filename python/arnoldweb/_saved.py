@@ -10,7 +10,7 @@ import numpy as np
 
 from . import _arnoldweb as _core
 from ._errors import OutputError
-from ._result import COUNTER_NAMES, INDICATOR_NAMES, Result, _COUNTER_DTYPE, _INDICATOR_DTYPE, _restore, Lazy
+from ._result import COUNTER_NAMES, INDICATOR_NAMES, Result, _COUNTER_DTYPE, _INDICATOR_DTYPE, _empty_if_none, _restore, _with_edges, Lazy
 
 __all__ = ["load"]
 
@@ -19,7 +19,7 @@ def _h5py(path: str):
     try:
         import h5py
     except ImportError:
-        raise ImportError(f"reading {path} needs h5py: pip install h5py (or arnoldweb[plots])") from None
+        raise ImportError(f"reading {path} needs h5py: pip install h5py") from None
     return h5py
 
 
@@ -106,8 +106,12 @@ def _part(folder: str, name: str, title: str) -> dict:
               "flagged_energy": flagged.get("energy", 0), "flagged_initial": flagged.get("initial", 0),
               "left_region": summary.get("left_region", 0)}
     energy = {k: v for k, v in summary.get("energy_error", {"tracked": False}).items() if k != "note"}
+    for bound in ("median_upper_bound", "p99_upper_bound"):  # JSON has no inf: null
+        if bound in energy and energy[bound] is None:
+            energy[bound] = float("inf")
+    energy = _with_edges(energy)
     return {
-        "map": maps["map"], "nside": maps["nside"], "frames": maps["frames"], "zoom": maps["zoom"],
+        "map": _empty_if_none(maps["map"]), "nside": maps["nside"], "frames": maps["frames"], "zoom": maps["zoom"],
         "states": _lazy(os.path.join(folder, "states.h5"), _states),
         "indicators": _lazy(os.path.join(folder, "indicators.h5"), _indicators),
         "outputs": Lazy(lambda: _outputs(folder, summary.get("files", []))),
@@ -122,7 +126,7 @@ def _part(folder: str, name: str, title: str) -> dict:
     }
 
 
-def load(out_dir: "str | os.PathLike[str]") -> Result:
+def load(out_dir: str | os.PathLike[str]) -> Result:
     """The :class:`Result` of a run's output directory (written by ``arnoldweb run --out`` or
     :func:`arnoldweb.run` with ``out``): map, frames and zoom (read by the library, the map
     checked against the digest in summary.json), states, indicators and every per-trajectory

@@ -60,5 +60,6 @@ void bind_accuracy(nb::module_& m);
 void bind_sphere(nb::module_& m);
 void bind_saved(nb::module_& m);
 void bind_states(nb::module_& m);
+void bind_model(nb::module_& m);
 
 }  // namespace awpy

@@ -25,4 +25,5 @@ NB_MODULE(_arnoldweb, m) {
   awpy::bind_sphere(m);
   awpy::bind_saved(m);
   awpy::bind_states(m);
+  awpy::bind_model(m);
 }

@@ -10,6 +10,7 @@
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
 
+#include <cmath>
 #include <cstring>
 #include <type_traits>
 
@@ -149,9 +150,22 @@ std::vector<std::string> write(RunRecord& r, const std::string& dir, bool force,
   return files;
 }
 
+// The bin edges of EnergyStats::log_hist (AW_EHIST_* layout, result.hpp): 0, then the lower
+// edge of every quarter-octave bin from 2^-64 to 2^16, then inf.
+nb::object energy_hist_edges() {
+  std::vector<double> edges{0.0};
+  for (int b = 1; b < AW_EHIST_BINS; ++b) {
+    const int octave = (b - 1) / AW_EHIST_BINS_PER_OCTAVE, quarter = (b - 1) % AW_EHIST_BINS_PER_OCTAVE;
+    edges.push_back(std::ldexp(1.0 + static_cast<double>(quarter) / AW_EHIST_BINS_PER_OCTAVE, AW_EHIST_MIN_EXP + octave));
+  }
+  edges.push_back(INFINITY);
+  return owned(std::move(edges), {static_cast<std::size_t>(AW_EHIST_BINS + 1)});
+}
+
 }  // namespace
 
 void bind_result(nb::module_& m) {
+  m.def("_energy_hist_edges", &energy_hist_edges, "The bin edges of the energy error histogram (log_hist).");
   nb::class_<RunRecord>(m, "_Run", "A run of a job (its plan and results); arnoldweb.Result views one part.")
       .def_prop_ro("parts_run", [](const RunRecord& r) { return r.result.results.size(); })
       .def_prop_ro("parts_planned", [](const RunRecord& r) { return r.job.parts.size(); })

@@ -83,20 +83,27 @@ TEST_SUITE("cli") {
     }
   }
 
-  TEST_CASE("an existing output directory is refused (exit 3) and left untouched") {
+  TEST_CASE("an existing output directory is refused and left untouched; --force is suggested only where it would do") {
     const std::string dir = awtest::temp_dir("cli");
     std::ofstream(dir + "/scene.toml") << kGood;
+    const std::string run = "run " + dir + "/scene.toml --quiet --device cpu --set output.images=false --out ";
+    std::string out;
+    // arnoldweb's own output: exit 3 without --force, which then replaces it
+    REQUIRE(awtest::run_cli(run + dir + "/ours", &out) == 0);
+    CHECK(awtest::run_cli(run + dir + "/ours", &out) == 3);
+    CHECK(contains(out, "exists; use --force"));
+    CHECK(awtest::run_cli(run + dir + "/ours --force", &out) == 0);
+    // the user's directory: refused (exit 2) with or without --force, which is not suggested
     fs::create_directories(dir + "/out");
     std::ofstream(dir + "/out/mine.txt") << "mine";
-    std::string out;
-    CHECK(awtest::run_cli("run " + dir + "/scene.toml --quiet --device cpu --out " + dir + "/out", &out) == 3);
-    CHECK(contains(out, "exists; use --force"));
-    CHECK(fs::exists(dir + "/out/mine.txt"));
-    // --force replaces only what arnoldweb wrote: this directory is the user's
-    CHECK(awtest::run_cli("run " + dir + "/scene.toml --quiet --device cpu --force --out " + dir + "/out", &out) == 2);
-    CHECK(contains(out, "refusing to replace it"));
-    CHECK(fs::exists(dir + "/out/mine.txt"));
-    CHECK_FALSE(fs::exists(dir + "/out/summary.json"));
+    for (const std::string force : {"", " --force"}) {
+      CAPTURE(force);
+      CHECK(awtest::run_cli(run + dir + "/out" + force, &out) == 2);
+      CHECK(contains(out, "refusing to replace it"));
+      CHECK_FALSE(contains(out, "use --force"));
+      CHECK(fs::exists(dir + "/out/mine.txt"));
+      CHECK_FALSE(fs::exists(dir + "/out/summary.json"));
+    }
   }
 
   TEST_CASE("double precision on a device without fp64 is refused with a way out") {
@@ -239,6 +246,20 @@ TEST_SUITE("cli") {
       CHECK(contains(out, "Usage"));
     }
     CHECK(awtest::run_cli("frobnicate", &out) == 2);
+  }
+
+  TEST_CASE("a shipped scene by its name, where no file of that name exists (arnoldweb check default)") {
+    const std::string dir = awtest::temp_dir("cli");
+    awtest::CliOptions here;
+    here.cwd = dir;
+    std::string out;
+    CHECK(awtest::run_cli({"check", "fig3_e15"}, &out, here) == 0);
+    CHECK(contains(out, "scenes/fig3_e15.toml"));
+    std::ofstream(dir + "/fig3_e15") << kGood;  // a file of that name is read first
+    CHECK(awtest::run_cli({"check", "fig3_e15"}, &out, here) == 0);
+    CHECK(contains(out, "200 trajectories"));
+    CHECK(awtest::run_cli({"check", "no_such_scene"}, &out, here) == 2);
+    CHECK(contains(out, "no_such_scene: cannot read the scene file"));
   }
 }
 

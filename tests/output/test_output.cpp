@@ -19,6 +19,11 @@
 #ifdef ARNOLDWEB_HAVE_CAIRO
 #include <cairo.h>
 #endif
+#include <fitsio.h>
+#ifdef ARNOLDWEB_HAVE_HEALPIX_CXX
+#include <healpix_map.h>
+#include <healpix_map_fitsio.h>
+#endif
 
 using namespace arnoldweb;
 namespace fs = std::filesystem;
@@ -115,6 +120,61 @@ TEST_SUITE("output") {
     CHECK(mom[3 * 7 + 2] == r.reals("final_states")[7 * AW_STATE_REALS + 5]);
     CHECK_FALSE(has_temporaries(dir));
     CHECK_FALSE(fs::exists(dir + ".partial-" + std::to_string(::getpid())));
+  }
+
+  TEST_CASE("map.fits (output.formats) is a HEALPix FITS map: RING, NSIDE, the counts of map.h5, listed with its digest") {
+    Plan p = small_plan();
+    const Result& r = small_result();
+    const std::string plain = awtest::temp_dir("fits") + "/out";
+    write_outputs(p, r, plain, {});
+    CHECK_FALSE(fs::exists(plain + "/map.fits"));  // only where asked for
+    p.scene.formats = {"hdf5", "fits"};
+    const std::string dir = awtest::temp_dir("fits") + "/out [1]";  // CFITSIO's syntax in a name means nothing
+    write_outputs(p, r, dir, {});
+    const std::string path = dir + "/map.fits";
+    REQUIRE(fs::exists(path));
+    CHECK_FALSE(has_temporaries(dir));
+    fitsfile* f = nullptr;
+    int status = 0;
+    REQUIRE(fits_open_diskfile(&f, path.c_str(), READONLY, &status) == 0);
+    int hdutype = 0;
+    fits_movabs_hdu(f, 2, &hdutype, &status);
+    CHECK(hdutype == BINARY_TBL);
+    char text[FLEN_VALUE];
+    auto word = [&](const char* key) {
+      fits_read_key(f, TSTRING, key, text, nullptr, &status);
+      return std::string(text);
+    };
+    CHECK(word("PIXTYPE") == "HEALPIX");
+    CHECK(word("ORDERING") == "RING");
+    CHECK(word("INDXSCHM") == "IMPLICIT");
+    CHECK(word("MAPDIGST") == digest_map(r));
+    long long nside = 0, last = 0, rows = 0;
+    fits_read_key(f, TLONGLONG, "NSIDE", &nside, nullptr, &status);
+    fits_read_key(f, TLONGLONG, "LASTPIX", &last, nullptr, &status);
+    fits_get_num_rowsll(f, &rows, &status);
+    CHECK(nside == 16);
+    CHECK(rows == 12 * 16 * 16);
+    CHECK(last == rows - 1);
+    std::vector<long long> counts(static_cast<std::size_t>(rows));
+    fits_read_col(f, TLONGLONG, 1, 1, 1, rows, nullptr, counts.data(), nullptr, &status);
+    fits_close_file(f, &status);
+    CHECK(status == 0);
+    CHECK(std::vector<std::uint64_t>(counts.begin(), counts.end()) == r.map);
+    const auto summary = nlohmann::json::parse(std::ifstream(dir + "/summary.json"));
+    CHECK(summary["file_digests"]["map.fits"]["bytes"] == fs::file_size(path));
+    CHECK(std::find(summary["files"].begin(), summary["files"].end(), "map.fits") != summary["files"].end());
+#ifdef ARNOLDWEB_HAVE_HEALPIX_CXX
+    // Debian's HEALPix C++ library reads it as a RING map of NSIDE 16 (from a plain name: it
+    // opens files with CFITSIO's extended syntax, where "[1]" would name an extension)
+    const std::string plain_copy = plain + "-map.fits";
+    fs::copy_file(path, plain_copy);
+    Healpix_Map<double> m;
+    read_Healpix_map_from_fits(plain_copy, m);
+    CHECK(m.Nside() == 16);
+    CHECK(m.Scheme() == RING);
+    CHECK(m[100] == static_cast<double>(r.map[100]));
+#endif
   }
 
 #ifdef ARNOLDWEB_HAVE_CAIRO

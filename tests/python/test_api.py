@@ -28,8 +28,9 @@ def test_scene_keys_cover_every_section():
 
 
 def test_from_file_set_chain_and_values(repo):
-    s = aw.Scene.from_file(repo / "scenes" / "default.toml")
-    assert s.set("model.energy", 30).set("ensemble.trajectories", 20000) is s
+    base = aw.Scene.from_file(repo / "scenes" / "default.toml")
+    s = base.set("model.energy", 30).set("ensemble.trajectories", 20000)
+    assert s is not base and base["model.energy"] == 15.0 and base.overrides == []  # set() leaves base alone
     assert s["model.energy"] == 30.0
     assert s["ensemble.trajectories"] == 20000
     assert s.overrides == ["model.energy=30", "ensemble.trajectories=20000"]
@@ -39,8 +40,8 @@ def test_from_file_set_chain_and_values(repo):
 
 def test_set_spells_python_values_as_toml(small_scene):
     s = small_scene
-    s.set("observe.velocity_map", {"nside": 8}).set("integrator.method", "leapfrog")
-    s.set("observe.initial_states", True).set("ensemble.cap.center", (10.0, -5))
+    s = s.set("observe.velocity_map", {"nside": 8}).set("integrator.method", "leapfrog")
+    s = s.set("observe.initial_states", True).set("ensemble.cap.center", (10.0, -5))
     assert s["observe.velocity_map.nside"] == 8
     assert s["integrator.method"] == "leapfrog"
     assert s["ensemble.cap.center"] == [10.0, -5.0]

@@ -35,10 +35,12 @@ def test_unknown_key_suggests():
     assert "did you mean 'model.energy'" in str(e.value)
 
 
-def test_missing_file():
-    with pytest.raises(aw.SceneError) as e:
+def test_missing_file_is_file_not_found():
+    with pytest.raises(FileNotFoundError) as e:
         aw.Scene.from_file("/nonexistent/scene.toml")
-    assert e.value.file == "/nonexistent/scene.toml" and e.value.line == 0
+    assert e.value.filename == "/nonexistent/scene.toml" and "/nonexistent/scene.toml" in str(e.value)
+    with pytest.raises(FileNotFoundError, match="did you mean 'default'"):  # not a file, nor a shipped scene
+        aw.run("defualt")
 
 
 def test_bad_set_leaves_scene_as_it_was(small_scene):
@@ -50,11 +52,19 @@ def test_bad_set_leaves_scene_as_it_was(small_scene):
     assert small_scene.overrides == []
 
 
-def test_values_wrong_together_fail_at_check(small_scene):
-    small_scene.set("integrator.step", 0.013)
-    with pytest.raises(aw.SceneError) as e:
-        small_scene.check()
-    assert e.value.key == "run.average"
+def test_values_wrong_together_point_at_what_the_user_set():
+    # run.average = 50 is written in the shipped default.toml; the step the user set makes it wrong
+    s = aw.scene("default").set("integrator.step", 0.013)
+    for attempt in (s.check, lambda: aw.run(s)):
+        with pytest.raises(aw.SceneError) as e:
+            attempt()
+        assert e.value.key == "run.average"
+        assert e.value.file == "Scene.set('integrator.step', 0.013)" and e.value.line == 0
+        assert str(e.value).startswith("Scene.set('integrator.step', 0.013): run.average: ")
+        assert "run.average as written at " in str(e.value) and "default.toml:24:1" in str(e.value)
+    with pytest.raises(aw.SceneError) as e:  # nothing set: the file's place, as before
+        aw.Scene.from_toml("[run]\naverage = 5.0\n[integrator]\nstep = 0.013\n", "mine.toml").check()
+    assert (e.value.file, e.value.line, e.value.key) == ("mine.toml", 2, "run.average")
 
 
 def test_unknown_device(small_scene):

@@ -1,4 +1,5 @@
 """Interop: maps are HEALPix RING (healpy reads them), the example draws its figure."""
+import os
 import subprocess
 import sys
 
@@ -20,7 +21,7 @@ def test_pixel_directions_are_ring_centres(small_scene):
 def test_binned_velocities_lie_on_the_shell_directions(small_scene):
     # each map pixel counts averaged velocities; the averaged velocity of a trajectory that
     # starts on the shell points near its initial momentum on this short run
-    small_scene.set("observe.initial_states", True)
+    small_scene = small_scene.set("observe.initial_states", True)
     r = aw.run(small_scene)
     d = aw.pixel_directions(r.nside)
     p = r.states["initial"]["momentum"]
@@ -58,3 +59,20 @@ def test_example_draws_its_figure(repo, tmp_path, flags):
     assert done.returncode == 0, done.stderr
     assert "3000 of 3000 trajectories binned" in done.stdout
     assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and out.stat().st_size > 20000
+
+
+def test_healpy_reads_the_fits_map(small_scene, tmp_path):
+    hp = pytest.importorskip("healpy")
+    r = aw.run(small_scene.set("output.formats", ["hdf5", "fits"]), out=tmp_path / "run")
+    assert r.map_file == str(tmp_path / "run" / "map.fits") and os.path.isfile(r.map_file)
+    m, header = hp.read_map(r.map_file, h=True, dtype=None)
+    header = dict(header)
+    assert header["ORDERING"] == "RING" and header["NSIDE"] == r.nside == 16 and header["PIXTYPE"] == "HEALPIX"
+    assert header["INDXSCHM"] == "IMPLICIT" and hp.get_nside(m) == 16
+    np.testing.assert_array_equal(m, r.map)
+    assert "map.fits" in r.summary["files"] and "map.fits" in r.summary["file_digests"]
+    loaded = aw.load(tmp_path / "run")
+    assert loaded.map_file == r.map_file and loaded == r
+    assert aw.run(small_scene).map_file is None  # not written anywhere
+    r.write(tmp_path / "again")
+    assert r.map_file == str(tmp_path / "again" / "map.fits")

@@ -54,7 +54,7 @@ def test_a_custom_handler_that_does_not_raise_lets_the_run_finish(small_scene):
     seen = []
     old = signal.signal(signal.SIGINT, lambda *a: seen.append(1))
     try:
-        small_scene.set("ensemble.chunk", 500)
+        small_scene = small_scene.set("ensemble.chunk", 500)
         r = aw.run(small_scene, progress=lambda d, t, s: d == 500 and os.kill(os.getpid(), signal.SIGINT))
     finally:
         signal.signal(signal.SIGINT, old)

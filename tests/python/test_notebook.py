@@ -18,3 +18,6 @@ def test_the_notebook_runs(repo, tmp_path, monkeypatch):
     outputs = [o for c in nb.cells if c.cell_type == "code" for o in c.outputs]
     assert not [o for o in outputs if o.output_type == "error"]
     assert sum(1 for o in outputs if "image/png" in o.get("data", {})) >= 3  # map, FLI, spectrum
+    # progress=True in a notebook: a bar (tqdm's text bar here, without ipywidgets), no warning
+    text = "".join(o.get("text", "") for o in outputs if o.output_type == "stream")
+    assert "arnoldweb: 100%" in text and "IProgress" not in text and "TqdmWarning" not in text

@@ -57,7 +57,7 @@ def test_indicators_from_python_and_cli(cli, tmp_path):
 @pytest.mark.parametrize("cli", cli_paths())
 def test_default_scene_from_python_and_cli(cli, repo, tmp_path):
     scene = aw.Scene.from_file(repo / "scenes" / "default.toml").set("ensemble.trajectories", 2000)
-    scene.set("run.device", "cpu").set("output.images", False)
+    scene = scene.set("run.device", "cpu").set("output.images", False)
     done = subprocess.run([cli, "run", "--quiet", "--device", "cpu", "--set", "ensemble.trajectories=2000",
                           "--set", "output.images=false", "--out", str(tmp_path / "cli"),
                           str(repo / "scenes" / "default.toml")], capture_output=True, text=True)

@@ -39,12 +39,12 @@ FIELDS = ("map", "frames", "zoom", "states", "indicators", "outputs", "counters"
 
 
 def test_scene_pickles_and_deep_copies(small_scene):
-    small_scene.set("model.energy", 20.0)
+    small_scene = small_scene.set("model.energy", 20.0)
     for other in (pickle.loads(pickle.dumps(small_scene)), copy.deepcopy(small_scene), copy.copy(small_scene)):
         assert other == small_scene and other is not small_scene
         assert other.overrides == small_scene.overrides and other.file == small_scene.file
-        other.set("model.energy", 30.0)
-        assert small_scene["model.energy"] == 20.0
+        other["model.energy"] = 30.0  # changed in place: the copy is independent
+        assert small_scene["model.energy"] == 20.0 and other["model.energy"] == 30.0
 
 
 def test_result_pickles_bit_for_bit(full_result):
@@ -95,8 +95,8 @@ def test_load_gives_every_output_back(tmp_path):
     # frequencies.h5, diffusion.h5, indicators.h5 and states.h5 of an fgl grid: Result.outputs of
     # the loaded directory (and of a pickle of it) equal the run's, dataset for dataset
     scene = aw.scene("fgl_frequency_map").set("ensemble.grid.resolution", [6, 5]).set("output.images", False)
-    scene.set("observe.diffusion", {"every": 40.96, "along": [1, 1, 0], "across": [1, -1, 0]})
-    scene.set("observe.final_states", True).set("run.device", "cpu")
+    scene = scene.set("observe.diffusion", {"every": 40.96, "along": [1, 1, 0], "across": [1, -1, 0]})
+    scene = scene.set("observe.final_states", True).set("run.device", "cpu")
     r = aw.run(scene, out=tmp_path / "run")
     assert {"frequencies", "actions", "indicators", "final_states"} <= set(r.outputs)
     for back in (aw.load(tmp_path / "run"), pickle.loads(pickle.dumps(aw.load(tmp_path / "run")))):
@@ -119,3 +119,22 @@ def test_load_checks_the_digest_and_names_bad_files(small_scene, tmp_path):
     assert e.value.path.endswith("map.h5")
     with pytest.raises(aw.OutputError, match="summary.json"):
         aw.load(tmp_path / "nothing-here")
+
+
+def test_results_are_equal_when_their_numbers_are(full_result, small_scene, tmp_path):
+    r = full_result
+    r.write(tmp_path / "run")
+    loaded = aw.load(tmp_path / "run")
+    for other in (pickle.loads(pickle.dumps(r)), copy.deepcopy(r), loaded, pickle.loads(pickle.dumps(loaded))):
+        assert other == r and r == other and not (other != r)
+    assert loaded.panels["hot"] == r.panels["hot"] and loaded.panels["hot"] != r
+    # the energy histogram and its edges come back from the directory too
+    assert_same_arrays(loaded.energy["log_hist"], r.energy["log_hist"])
+    assert_same_arrays(loaded.energy["log_hist_edges"], r.energy["log_hist_edges"])
+    # another run of the same scene (another wall time) is equal; another seed is not
+    again = aw.run(aw.Scene.from_dict(r.summary["scene"]))
+    assert again == r
+    other_seed = aw.run(small_scene.set("ensemble.seed", 8))
+    assert other_seed != aw.run(small_scene) and r != "a result"
+    with pytest.raises(TypeError):
+        hash(r)

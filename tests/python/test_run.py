@@ -52,7 +52,7 @@ def test_map_is_a_view_of_the_library_memory(small_scene):
 
 
 def test_states_shapes_and_dtypes(small_scene):
-    small_scene.set("observe.initial_states", True).set("observe.final_states", True)
+    small_scene = small_scene.set("observe.initial_states", True).set("observe.final_states", True)
     r = aw.run(small_scene)
     n = r.completed
     init, fin = r.states["initial"], r.states["final"]
@@ -67,8 +67,8 @@ def test_states_shapes_and_dtypes(small_scene):
 
 
 def test_zoom_and_frames_shapes(small_scene):
-    small_scene.set("observe.zoom", {"center": [45.0, 0.0], "width": 60.0, "resolution": 32})
-    small_scene.set("run.duration", 10.0).set("observe.frames", {"times": [0.0, 5.0, 10.0]})
+    small_scene = small_scene.set("observe.zoom", {"center": [45.0, 0.0], "width": 60.0, "resolution": 32})
+    small_scene = small_scene.set("run.duration", 10.0).set("observe.frames", {"times": [0.0, 5.0, 10.0]})
     r = aw.run(small_scene)
     assert r.zoom.shape == (32, 32) and r.zoom.dtype == np.uint64
     assert r.frames.shape == (2, 12 * 16 * 16) and r.frames.dtype == np.uint64
@@ -103,7 +103,7 @@ def test_run_out_writes_like_the_cli(small_scene, tmp_path):
 
 
 def test_progress_callback_sees_every_chunk(small_scene):
-    small_scene.set("ensemble.chunk", 500)
+    small_scene = small_scene.set("ensemble.chunk", 500)
     seen = []
     r = aw.run(small_scene, progress=lambda done, total, seconds: seen.append((done, total)))
     dones = [d for d, _ in seen]
@@ -118,7 +118,7 @@ def test_progress_true_prints(small_scene, capsys):
 
 
 def test_exception_in_callback_stops_with_partial_result(small_scene):
-    small_scene.set("ensemble.chunk", 500)
+    small_scene = small_scene.set("ensemble.chunk", 500)
 
     def cb(done, total, seconds):
         if done >= 1000:
@@ -131,7 +131,7 @@ def test_exception_in_callback_stops_with_partial_result(small_scene):
 
 
 def test_gil_is_released_while_computing(small_scene):
-    small_scene.set("ensemble.trajectories", 100000)  # long enough on a fast CPU (20000: 0.09 s on AVX-512)
+    small_scene = small_scene.set("ensemble.trajectories", 100000)  # long enough on a fast CPU (20000: 0.09 s on AVX-512)
     ticks = []
     stop = threading.Event()
 
@@ -176,8 +176,8 @@ def test_no_indicators_unless_asked(small_scene):
 
 
 def test_indicators_on_a_healpix_grid(small_scene):
-    small_scene.set("ensemble.initial", "grid").set("ensemble.grid", {"kind": "healpix", "nside": 2})
-    small_scene.set("ensemble.trajectories", 48).set("observe.fli", True).set("observe.megno", True)
+    small_scene = small_scene.set("ensemble.initial", "grid").set("ensemble.grid", {"kind": "healpix", "nside": 2})
+    small_scene = small_scene.set("ensemble.trajectories", 48).set("observe.fli", True).set("observe.megno", True)
     r = aw.run(small_scene)
     ind = r.indicators
     assert ind.shape == (48,) and ind.dtype.names == aw.INDICATOR_NAMES
@@ -188,8 +188,8 @@ def test_indicators_on_a_healpix_grid(small_scene):
 
 
 def test_indicators_on_a_lonlat_grid_have_its_shape(small_scene):
-    small_scene.set("ensemble.initial", "grid").set("ensemble.grid", {"kind": "lonlat", "resolution": [6, 4]})
-    small_scene.set("ensemble.trajectories", 24).set("observe.lyapunov", True)
+    small_scene = small_scene.set("ensemble.initial", "grid").set("ensemble.grid", {"kind": "lonlat", "resolution": [6, 4]})
+    small_scene = small_scene.set("ensemble.trajectories", 24).set("observe.lyapunov", True)
     r = aw.run(small_scene)
     assert r.indicators.shape == (4, 6)  # [n2][n1], as in indicators.h5
     assert np.all(np.isfinite(r.indicators["lyapunov"]))
@@ -219,8 +219,8 @@ def test_frequencies_and_diffusion_from_python(repo, tmp_path):
     """observe.frequencies and observe.diffusion: the records as their files hold them, the
     diffusion analysis as summary.json holds it, the same from a saved run (docs/frequencies.md)."""
     s = aw.Scene.from_file(repo / "scenes" / "fgl_frequency_map.toml")
-    s.set("ensemble.grid.resolution", [6, 4]).set("observe.fli", False).set("run.device", "cpu")
-    s.set("observe.diffusion", {"every": 10.24, "along": [1, 1, 0], "across": [1, -1, 0], "fit_from": 40.96})
+    s = s.set("ensemble.grid.resolution", [6, 4]).set("observe.fli", False).set("run.device", "cpu")
+    s = s.set("observe.diffusion", {"every": 10.24, "along": [1, 1, 0], "across": [1, -1, 0], "fit_from": 40.96})
     r = aw.run(s, out=tmp_path / "fm")
     f = r.outputs["frequencies"]
     assert f["nu_first"].shape == (4, 6, 3) and f["diffusion_index"].shape == (4, 6)
@@ -243,7 +243,7 @@ def test_frequencies_and_diffusion_from_python(repo, tmp_path):
 def test_continue_run_is_one_longer_run(small_scene, tmp_path):
     """aw.continue_run(out, T): a run of 2T is bit for bit a run of T continued for T (the final
     states and windings, the map of the second window, the time), as `arnoldweb continue`."""
-    small_scene.set("observe.final_states", True).set("ensemble.trajectories", 1000)
+    small_scene = small_scene.set("observe.final_states", True).set("ensemble.trajectories", 1000)
     whole = aw.run(small_scene.copy().set("run.duration", 10.0))
     first = aw.run(small_scene, out=tmp_path / "first")
     rest = aw.continue_run(tmp_path / "first", 5.0)

@@ -52,7 +52,7 @@ def test_run_with_initial_checks_the_states_then_starts_from_them(small_scene):
         aw.run(small_scene, initial=(x, 3 * p))
     with pytest.raises(TypeError):
         aw.run(small_scene, initial=x)
-    small_scene.set("observe.initial_states", True).set("observe.final_states", True)
+    small_scene = small_scene.set("observe.initial_states", True).set("observe.final_states", True)
     r = aw.run(small_scene, initial=(x, p))
     assert r.trajectories == 20 and r.completed == 20
     start = r.states["initial"]

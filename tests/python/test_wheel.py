@@ -36,7 +36,28 @@ def test_the_wheel_needs_no_nvrtc_mpi_or_driver():
         for lib in needed(path):
             assert not lib.startswith(("libnvrtc", "libcuda", "libcudart", "libmpi", "libopen-")), (path, lib)
     bundled = {p.name.split("-")[0] for p in LIBS.iterdir()}
-    assert {"libhdf5_serial", "libcairo", "libOpenCL", "libgomp"} <= bundled
+    assert {"libhdf5", "libcfitsio", "libcairo", "libOpenCL", "libgomp"} <= bundled
+
+
+# What Debian's HDF5 (libcurl for its ROS3 driver) and CFITSIO (libcurl-gnutls) dragged in:
+# network and crypto libraries nobody asked for (scripts/wheel-deps.sh builds them without)
+NETWORK_OR_CRYPTO = ("libcurl", "libssl", "libcrypto", "libgnutls", "libnettle", "libhogweed", "libgmp", "libkrb5",
+                     "libk5crypto", "libgssapi", "libldap", "liblber", "libsasl2", "libssh", "librtmp", "libpsl",
+                     "libnghttp2", "libidn2", "libp11-kit", "libtasn1", "libunistring", "libkeyutils")
+
+
+def test_no_network_or_crypto_library_inside_and_none_grown():
+    installed_from_wheel()
+    names = sorted(p.name for p in LIBS.iterdir())
+    assert not [n for n in names if n.startswith(NETWORK_OR_CRYPTO)], names
+    # a bundled library is about its original's size (patchelf 0.18+ laid Debian's libXdmcp out by its
+    # 2 MiB segment alignment: 22 KB became 6.3 MB); the originals are this build machine's
+    for p in LIBS.iterdir():
+        base = p.name.split("-")[0]
+        originals = list(pathlib.Path("/usr/lib/x86_64-linux-gnu").glob(base + ".so.*"))
+        originals = [o for o in originals if not o.is_symlink()]
+        if originals:
+            assert p.stat().st_size < 1.2 * max(o.stat().st_size for o in originals) + 65536, p.name
 
 
 SCRIPT = """
@@ -72,7 +93,7 @@ def cpu_runs(isa):
 
 def test_every_instruction_set_gives_the_same_bits(small_scene, monkeypatch):
     installed_from_wheel()
-    small_scene.set("observe.final_states", True)
+    small_scene = small_scene.set("observe.final_states", True)
     digests = {}
     for isa in ("x86-64", "x86-64-v3", "x86-64-v4"):
         if not cpu_runs(isa):

@@ -151,6 +151,7 @@ const char* kFullSceneFixed =
     "[output]\n"
     "dir = \"runs/E400 \\\"x\\\"\"\n"
     "images = false\n"
+    "formats = [\"hdf5\", \"fits\"]\n"
     "[ensemble.cap]\n"
     "center = [10, -20.5]\n"
     "radius = 3.5\n"
@@ -284,6 +285,8 @@ TEST_SUITE("scene") {
     CHECK(s.final_states);
     CHECK(s.output_dir == "runs/E400 \"x\"");
     CHECK_FALSE(s.images);
+    CHECK(s.formats == std::vector<std::string>{"hdf5", "fits"});
+    CHECK(s.writes_format("fits"));
     CHECK(s.cap_center == std::array<double, 2>{10, -20.5});
     CHECK(s.cap_radius == 3.5);
     CHECK(s.box_lon == std::array<double, 2>{-10, 20});

@@ -108,6 +108,9 @@ std::string summary_json(const Plan& plan, const Result& result, const std::vect
 // Individual writers (each atomic).
 void write_text_file(const std::string& path, const std::string& text);
 void write_map_hdf5(const std::string& path, const Plan& plan, const Result& result);
+// map.fits: the velocity map as a HEALPix FITS binary table (RING, NSIDE), for
+// healpy.read_map; written where output.formats asks for "fits".
+void write_map_fits(const std::string& path, const Plan& plan, const Result& result);
 // One dataset of a per-trajectory output as its file holds it (the output
 // table's datasets; docs/outputs.md): e.g. output "final_states", dataset
 // "momentum" of shape {n, 3}; "indicators"/"fli" of the grid's shape.

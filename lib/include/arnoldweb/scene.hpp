@@ -154,6 +154,9 @@ struct Scene {
   // [output]
   std::string output_dir = "out";
   bool images = true;
+  // output.formats: the map's files, "hdf5" (map.h5, always) and "fits" (map.fits)
+  std::vector<std::string> formats{"hdf5"};
+  bool writes_format(const std::string& f) const;
 
   // [[panel]]: further runs of the same scene with overrides, drawn as insets
   // of one figure (e.g. the zooms (b), (c) of the paper's Figure 2).

@@ -265,9 +265,10 @@ fs::path staging_name(const fs::path& final_dir, const char* kind) {
 void check_place(const fs::path& dir, const OutputOptions& o, const std::string& shown) {
   struct stat st {};
   if (::lstat(dir.c_str(), &st) == 0) {
-    if (!o.force) throw OutputError(shown, "exists; use --force to replace it, or choose another with --out");
+    // refused whatever the options first: --force is suggested only where it would do
     const std::string why = why_not_replaceable(dir.string(), o.scene_file);
     if (!why.empty()) throw OutputRefused(shown, "refusing to replace it: " + why);
+    if (!o.force) throw OutputError(shown, "exists; use --force to replace it, or choose another with --out");
   } else if (errno != ENOENT && errno != ENOTDIR) {
     throw OutputError(shown, "cannot look at it: " + errno_text());
   }

@@ -39,6 +39,8 @@ void write_run_files(const Plan& plan, const Result& result, const fs::path& dir
   };
   if (!result.map.empty() || !result.zoom.empty())
     file("map.h5", [&](const std::string& p) { write_map_hdf5(p, plan, result); });
+  if (!result.map.empty() && plan.scene.writes_format("fits"))
+    file("map.fits", [&](const std::string& p) { write_map_fits(p, plan, result); });
   for (const std::string& name : record_files(result))
     file(name, [&](const std::string& p) { write_records_hdf5(p, name, plan, result); });
   double lon, lat;
@@ -60,6 +62,7 @@ double part_bytes(const Plan& p) {
   const double n = static_cast<double>(p.scene.trajectories);
   double b = 64e3;                                                  // summary.json
   b += 8.0 * static_cast<double>(p.hist_size + (p.frames > 1 ? p.npix : 0)) + 16e3;  // map.h5
+  if (p.scene.writes_format("fits")) b += 8.0 * static_cast<double>(p.npix) + 16e3;   // map.fits
   const detail::IntParams& ip = detail::params(p).ints;
   b += n * static_cast<double>(ip.rec_reals + ip.rec_ints) * 8 * 1.5 + 16e3;  // the records' files (and derived datasets)
   if (p.kernel.features & AW_F_TANGENT) b += p.scene.images ? 3e6 : 0;  // the indicators' pictures

@@ -48,8 +48,11 @@ std::string summary_json(const Plan& plan, const Result& r, const std::vector<st
     j["energy_error"]["mean"] = r.energy.mean;
     j["energy_error"]["median_upper_bound"] = number_or_null(r.energy.quantile(0.5));
     j["energy_error"]["p99_upper_bound"] = number_or_null(r.energy.quantile(0.99));
+    j["energy_error"]["log_hist"] = r.energy.log_hist;
     j["energy_error"]["note"] = "max and mean over binned trajectories of max_t |E(t) - E(0)|; quantiles are "
-                                "upper edges of quarter-octave histogram bins over all trajectories";
+                                "upper edges of quarter-octave histogram bins over all trajectories (log_hist: "
+                                "its counts, bin 0 below 2^-64, then four bins per octave up to 2^16, the last "
+                                "from 2^16 on)";
   }
   j["digests"] = {{"algorithm", "XXH3-128"}, {"map", digest_map(r)}};
   for (const std::string& name : output_names()) j["digests"][name] = digest_records(r, name);

@@ -12,7 +12,9 @@
 namespace arnoldweb::detail {
 
 // Throws SceneError for `key`, reported where its value came from: the file
-// position, or the option or override that gave it.
+// position, or the option or override that gave it; or, when its value came
+// from the file but the message names a key an override gave (values wrong
+// together), at that override (the last one), saying where `key`'s value is written.
 [[noreturn]] void fail_at(const Scene& s, const std::string& key, const std::string& message);
 
 // A number for messages: 10 significant digits ("%.10g"); a count: all its digits.

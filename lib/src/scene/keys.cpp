@@ -679,6 +679,28 @@ void output_keys(Rows& add) {
       "Directory the outputs are written to.");
   add("output.images", "boolean", "true or false", "true or false", bool_of(&Scene::images),
       bool_into(&Scene::images), "Write images of the maps.");
+  add("output.formats", "array of strings", "\"hdf5\" (always), \"fits\"",
+      "an array of the map's formats that holds \"hdf5\": [\"hdf5\"] or [\"hdf5\", \"fits\"]",
+      [](const Scene& s) { return "[" + quoted_list(s.formats, ", ") + "]"; },
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        const toml::array* a = n.as_array();
+        if (!a) return r.bad(key, n, false);
+        std::vector<std::string> v;
+        for (const toml::node& e : *a) {
+          const auto f = e.as_string();
+          if (!f) return r.bad(key, n, true, " (an element is a " + std::string(type_name(e.type())) + ")");
+          if (std::find(v.begin(), v.end(), f->get()) != v.end())
+            return r.bad(key, n, true, " (\"" + f->get() + "\" twice)");
+          v.push_back(f->get());
+        }
+        for (const std::string& f : v)
+          if (f != "hdf5" && f != "fits") return r.bad(key, n, true, " (\"" + f + "\" is no format of the map)");
+        if (std::find(v.begin(), v.end(), "hdf5") == v.end())
+          return r.bad(key, n, true, " (map.h5 is what arnoldweb reads back: render, compare, resume, Python's load)");
+        s.formats = v;
+      },
+      "The map's files: \"hdf5\", map.h5, always (arnoldweb reads it back); \"fits\" adds map.fits, the same counts "
+      "as a HEALPix FITS binary table (RING, NSIDE) for healpy.read_map and other FITS tools (docs/outputs.md).");
 }
 
 // Chaos indicators and grids of initial conditions (docs/indicators.md).

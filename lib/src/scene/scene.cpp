@@ -4,6 +4,8 @@
 // first one (in file order, then the overrides in order) is thrown.
 #include "arnoldweb/scene.hpp"
 
+#include <algorithm>
+
 #include "arnoldweb/errors.hpp"
 #include "os/regular_file.hpp"
 #include "scene/scene_internal.hpp"
@@ -25,6 +27,10 @@ const char* to_string(MathMode m) {
 SourcePos Scene::pos(const std::string& key) const {
   auto it = where.find(key);
   return it == where.end() ? SourcePos{} : it->second;
+}
+
+bool Scene::writes_format(const std::string& f) const {
+  return std::find(formats.begin(), formats.end(), f) != formats.end();
 }
 
 std::string Scene::origin(const std::string& key) const {

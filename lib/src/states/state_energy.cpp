@@ -14,7 +14,7 @@ namespace arnoldweb {
 namespace detail {
 
 void check_state_energies(StateSet& s, const ModelDescriptor& model, const RealParams& rp, double e) {
-  const std::array<double, 6> k = model.kinetic(rp);  // T = sum a_i p_i^2 / 2 + b_i p_i
+  const std::array<double, 6> k = model.kinetic(rp);
   const std::array<double, 2> v = model.v_range(rp);
   const double scale = std::max(std::fabs(e), v[1] - v[0]);
   const double tolerance = kStateEnergyTolerance * scale;
@@ -25,9 +25,7 @@ void check_state_energies(StateSet& s, const ModelDescriptor& model, const RealP
     if (s.status[i] != 0) continue;
     const double* u = &s.position_turns[3 * i];
     const double* p = &s.momentum[3 * i];
-    double t = 0;
-    for (int c = 0; c < 3; ++c) t += k[c] * p[c] * p[c] / 2 + k[3 + c] * p[c];
-    const double h = t + model.potential(u[0], u[1], u[2], rp);
+    const double h = state_energy(model, rp, k, u, p);
     if (!std::isfinite(h) || std::fabs(h - e) > tolerance)
       throw StateError(s.source, "", static_cast<std::int64_t>(i),
                        "the state's energy H = T(P) + V(X) = " + detail::show_number(h) +

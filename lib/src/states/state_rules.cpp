@@ -61,9 +61,8 @@ void StateRows::set_positions(StateSet& s, const std::vector<double>& positions,
         wrapped = u;
         whole = w;
       } else if (std::isfinite(u) && std::fabs(u) <= kMaxStateTurns) {
-        const double w = std::nearbyint(u);  // exact: |u| <= 2^52
-        wrapped = u - w;
-        whole = static_cast<std::int64_t>(w);
+        wrapped = wrapped_turns(u);  // exact: |u| <= 2^52
+        whole = static_cast<std::int64_t>(u - wrapped);
       } else {
         if (checked)
           fail(dataset, i,

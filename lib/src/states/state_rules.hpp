@@ -5,6 +5,7 @@
 // keeps flagged trajectories) are carried as they are, without checks.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -41,5 +42,8 @@ void check_start_time(const StateSet& s, double duration);
 
 // "(1, nan, 3)"
 std::string show_row(const double* v);
+
+// A position in turns wrapped to [-1/2, 1/2] (exact for |u| <= 2^52), as states hold it.
+inline double wrapped_turns(double u) { return u - std::nearbyint(u); }
 
 }  // namespace arnoldweb::detail
