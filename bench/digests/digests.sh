@@ -4,7 +4,9 @@
 # The cases on the default scene's physics use scenes/default_paper.toml (Yoshida-6 at
 # 0.02 T, the default scene until 2026-11-26); "sbab3c" is scenes/default.toml itself.
 # Prints one line per case and device: map, initial-states, final-states and
-# indicator digests, max |dE|, binned count.
+# indicator digests, max |dE|, binned count, and the frequencies' digest where
+# the case has them (freq-*: the FGL frequency map and the default scene's
+# chaotic orbits, whose largest terms the band's grid finds).
 #   bench/digests/digests.sh [BIN] [DEVICES...]   (default: build/arnoldweb cpu opencl:0)
 # Expression models need a device that compiles at run time (OpenCL, CUDA, or a
 # cpu backend with a host compiler); a case a device refuses prints "refused".
@@ -33,6 +35,8 @@ cases=(
   "sbab3c-expression|scenes/default.toml|;--set;model.kind=expression;--set;model.potential=\"cos(x)*cos(y)*(1 + cos(2*z))\";--set;run.average=5;--set;run.duration=5$n3000"
   "fli-grid|scenes/fli_e15.toml|;--set;ensemble.grid.nside=8;--set;run.duration=20;--set;run.average=20"
   "fli-fgl|scenes/fli_fgl.toml|;--set;ensemble.grid.resolution=[24,24];--set;run.duration=100;--set;run.average=100"
+  "freq-fgl|scenes/fgl_frequency_map.toml|;--set;ensemble.grid.resolution=[48,48]"
+  "freq-default|scenes/default_paper.toml|;--set;run.average=10.24;--set;run.duration=10.24;--set;observe.energy_error.every=1.28;--set;observe.frequencies={ samples = 128, every = 0.04 }$n3000"
 )
 for dev in "${devices[@]}"; do
   for c in "${cases[@]}"; do
@@ -49,7 +53,8 @@ s = json.load(open(sys.argv[1]))
 d = s["digests"]
 print(f'{sys.argv[2]:18} {sys.argv[3]:9} map {d["map"]} init {d.get("initial_states","")[:12]} '
       f'final {d.get("final_states","")[:12]} ind {d.get("indicators","")[:12]} '
-      f'max|dE| {s["energy_error"].get("max", "-")!r} binned {s["binned"]}')
+      f'max|dE| {s["energy_error"].get("max", "-")!r} binned {s["binned"]}'
+      + (f' freq {d["frequencies"][:12]}' if d.get("frequencies") else ''))
 PY
   done
 done

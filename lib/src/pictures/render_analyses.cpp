@@ -102,7 +102,7 @@ void render_frequency_map(const Plan& plan, const Result& r, const Records& rec,
     return raster[static_cast<std::size_t>(j) * side + static_cast<std::size_t>(i)];
   });
   frame(c, x0, y0, side, side, rx, ry, "nu_x (turns per T, first window)", "nu_y (turns per T, first window)");
-  linear_bar(c, x0 + (side - 500) / 2.0, y0 + side + 80, 500, 16, scale, "diffusion index log10 |nu(2) - nu(1)|");
+  linear_bar(c, x0 + (side - 500) / 2.0, y0 + side + 80, 500, 16, scale, "diffusion index log10 ||nu(2)| - |nu(1)||");
   c.text(20, 28, "frequency map   " + picture_title(plan), 15);
   c.text(20, h - 12, picture_caption(r), 11, 0.7, 0.7, 0.7);
   c.save(path);
@@ -190,7 +190,7 @@ void write_analysis_pictures(const Plan& plan, const Result& r, const std::strin
     names.push_back("frequency_map.png");
     if (plan.scene.initial == "grid") {
       write_grid_picture(plan, r, dir + "/diffusion_index.png", diffusion_index(*rec),
-                         "diffusion index log10 |nu(2) - nu(1)|");
+                         "diffusion index log10 ||nu(2)| - |nu(1)||");
       names.push_back("diffusion_index.png");
     }
   }
