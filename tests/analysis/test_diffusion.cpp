@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -210,32 +209,16 @@ TEST_SUITE("diffusion") {
 
   TEST_CASE("a run whose variance does not grow linearly: the warning in summary.json, on stderr, and the "
             "linearity in diffusion.csv") {
-    // integrable fgl (eps = 0): the actions do not move; along the resonance the variance stays 0
+    // the D(eps) scene at eps = 0 (integrable): the actions do not move, the variance stays 0
     const std::string dir = awtest::temp_dir("diffusion-warning");
-    std::ofstream(dir + "/scene.toml") << R"(
-      [model]
-      kind = "fgl"
-      epsilon = 0.0
-      energy = 0.5
-      [ensemble]
-      initial = "grid"
-      grid = { kind = "plane", resolution = [4, 4], range1 = [0.29, 0.31], range2 = [0.29, 0.31], axes = [0, 1], fixed = 0.0, position = [0.0, 0.0, 0.0] }
-      [integrator]
-      method = "saba3"
-      step = 0.02
-      [run]
-      duration = 20.48
-      average = 20.48
-      [observe]
-      velocity_map = false
-      energy_error = { every = 1.28 }
-      diffusion = { every = 1.28, along = [1, 1, 0], across = [1, -1, 0], fit_from = 2.56 }
-      [output]
-      images = false
-    )";
     std::string out;
-    REQUIRE(awtest::run_cli({"run", dir + "/scene.toml", "--quiet", "--device", "cpu", "--out", dir + "/out"}, &out) ==
-            0);
+    REQUIRE(awtest::run_cli({"run", std::string(ARNOLDWEB_SOURCE_DIR) + "/scenes/fgl_diffusion.toml", "--quiet",
+                             "--device", "cpu", "--out", dir + "/out", "--set", "model.epsilon=0",
+                             "--set", "ensemble.grid.resolution=[4,4]", "--set", "run.duration=20.48", "--set",
+                             "run.average=20.48", "--set", "observe.energy_error.every=1.28", "--set",
+                             "observe.diffusion={ every = 1.28, along = [1, 1, 0], across = [1, -1, 0], fit_from = 2.56 }",
+                             "--set", "output.images=false"},
+                            &out) == 0);
     CHECK(out.find("arnoldweb: warning: observe.diffusion: the variance along the resonance does not grow") !=
           std::string::npos);
     std::ifstream in(dir + "/out/summary.json");
