@@ -65,7 +65,7 @@ int run_accuracy(const AccuracyFlags& f) {
   o.duration = f.pilot_duration;
   o.methods = f.methods;
   o.prefilter = !f.no_prefilter;
-  const AccuracyReport r = assess_accuracy(scene, *backend, target, o);
+  const AccuracyReport r = assess_accuracy(scene, read_plan_inputs(scene), *backend, target, o);
 
   std::cout << "scene        " << scene.file << " (E = " << scene.energy << ", " << scene.trajectories
             << " trajectories, " << scene.duration << " T, " << to_string(scene.precision) << ", "

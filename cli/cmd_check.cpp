@@ -44,7 +44,7 @@ void add_check_command(CLI::App& app, Action& action) {
                 << short_number(m.host_bytes / 1048576.0) << " MiB in this process (largest launch "
                 << m.max_chunk << " trajectories)\n";
       if (!device_warning.empty()) std::cout << "warning      " << device_warning << "\n";
-      std::cout << "outputs      " << p.out_dir << " (about " << short_number(p.output.expected_bytes / 1e6)
+      std::cout << "outputs      " << printable(p.out_dir) << " (about " << short_number(p.output.expected_bytes / 1e6)
                 << " MB at most)\n";
       return 0;
     };

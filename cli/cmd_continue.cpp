@@ -4,10 +4,8 @@
 // states.h5 (ensemble.initial = "file"), and they run DURATION more T: a run
 // of 2T is, bit for bit, a run of T continued for T (the final states, and
 // the map of the second window). The outputs go to --out (default
-// OUTDIR-to-<end time>); --set and --device apply on top.
-#include <iostream>
-#include <sstream>
-
+// OUTDIR-to-<end time>); --device and --set apply on top, --set only for the
+// keys that leave the trajectories unchanged (continue_keys()).
 #include "arnoldweb/arnoldweb.hpp"
 #include "command.hpp"
 #include "ranks.hpp"
@@ -23,13 +21,6 @@ struct ContinueFlags {
   bool quiet = false;
 };
 
-std::string number(double v) {
-  std::ostringstream s;
-  s.precision(15);
-  s << v;
-  return s.str();
-}
-
 int continue_run(ContinueFlags& f) {
   refuse_mpirun_without_mpi();
   if (cluster() && cluster()->rank() != 0) return serve_rank(f.scene.device);
@@ -37,20 +28,15 @@ int continue_run(ContinueFlags& f) {
   while (from.size() > 1 && from.back() == '/') from.pop_back();
   if (!(f.duration > 0))
     throw SceneError("--for", 0, 0, "run.duration", "--for must be a duration in T greater than 0");
-  // the run's scene as run, then what continuing changes, then the user's --set
-  const Continuation run = continuation_of(from, f.duration);
-  std::vector<std::string> sets = run.overrides, labels = run.labels;
-  labels.back() = "--for " + number(f.duration);
-  if (!f.scene.out) f.scene.out = from + "-to-" + number(run.end_time + f.duration);
-  sets.insert(sets.end(), f.scene.sets.begin(), f.scene.sets.end());
-  labels.resize(sets.size());
-  sets.push_back("output.dir=" + *f.scene.out);
-  labels.push_back("--out " + *f.scene.out);
-  if (f.scene.device) {
-    sets.push_back("run.device=" + *f.scene.device);
-    labels.push_back("--device " + *f.scene.device);
-  }
-  const Scene scene = parse_scene(run.scene_toml, run.source, sets, labels);
+  // the run's scene as run, then what continuing changes, then the user's --set, --out, --device
+  ContinueArgs args;
+  args.duration = f.duration;
+  args.sets = f.scene.sets;
+  args.out = f.scene.out;
+  args.out_beside = true;
+  args.device = f.scene.device;
+  const Continuation run = continuation_of(from, args);
+  const Scene scene = parse_scene(run.scene_toml, run.source, run.overrides, run.labels);
   const PreparedJob prepared = prepare_scene_job(scene, run.source, f.force);
   return execute_job(prepared, f.quiet, std::nullopt, f.scene.device);
 }
@@ -66,7 +52,9 @@ void add_continue_command(CLI::App& app, Action& action) {
   c->add_option("--out,-o", flags->scene.out, "Output directory (default: OUTDIR-to-<end time>)");
   c->add_option("--device,-d", flags->scene.device,
                 "Device: cpu, opencl:N, cuda:N, auto, all (every GPU) or a list cuda:0,cuda:1 (default: the run's)");
-  c->add_option("--set,-s", flags->scene.sets, "Override a key of the run's scene: --set key=value");
+  c->add_option("--set,-s", flags->scene.sets,
+                "Override a key of the run's scene that leaves the trajectories unchanged (outputs, device, "
+                "checkpoints; docs/cluster.md): --set key=value");
   c->add_flag("--force,-f", flags->force, "Replace an existing output directory that arnoldweb wrote");
   c->add_flag("--quiet,-q", flags->quiet, "Print nothing but errors");
   c->callback([&action, flags] { action = [flags] { return continue_run(*flags); }; });

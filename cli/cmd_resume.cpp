@@ -27,11 +27,11 @@ int resume(const ResumeFlags& f) {
   const CheckpointInfo info = read_checkpoint_info(read_checkpoint_file(found.file), found.file);
   std::vector<std::string> sets = info.overrides, labels = info.override_labels;
   labels.resize(sets.size());
-  sets.push_back("output.dir=" + out);
+  sets.push_back(string_override("output.dir", out, "resume " + out));
   labels.push_back("resume " + out);
   if (f.device) {
     const std::string device = explicit_rank_device(f.device).value_or(*f.device);
-    sets.push_back("run.device=" + device);
+    sets.push_back(string_override("run.device", device, "--device " + device));
     labels.push_back("--device " + device);
   }
   const Scene scene = parse_scene(info.scene_text, info.scene_file, sets, labels);

@@ -32,6 +32,9 @@ void add_scene_options(CLI::App* command, SceneArgs& args);
 // Read the scene with --set, --out and --device applied (errors name the
 // option the user typed).
 Scene load_scene_args(const SceneArgs& args);
+// --device as the scene reader reads run.device (trimmed, its form checked;
+// an error names --device); absent stays absent.
+std::optional<std::string> read_device_option(const std::optional<std::string>& device);
 
 // What `check` and `run` both validate before anything is computed: the
 // scene, every panel, and the output directory (made-writable probe, free
@@ -70,5 +73,7 @@ void add_keys_command(CLI::App& app, Action& action);
 void add_render_command(CLI::App& app, Action& action);
 void add_compare_command(CLI::App& app, Action& action);
 void add_accuracy_command(CLI::App& app, Action& action);
+void add_view_command(CLI::App& app, Action& action);
+void add_serve_command(CLI::App& app, Action& action);
 
 }  // namespace arnoldweb::cli

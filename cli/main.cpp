@@ -32,6 +32,8 @@ int main(int argc, char** argv) {
   add_render_command(app, action);
   add_compare_command(app, action);
   add_accuracy_command(app, action);
+  add_view_command(app, action);
+  add_serve_command(app, action);
 
   // an unknown command is named (CLI11 would only say that one is required)
   if (argc > 1 && argv[1][0] != '-') {

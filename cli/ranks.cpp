@@ -8,6 +8,8 @@
 #include "arnoldweb/accuracy.hpp"
 #include "arnoldweb/cluster.hpp"
 #include "arnoldweb/errors.hpp"
+#include "arnoldweb/inputs.hpp"
+#include "command.hpp"
 #include "stop_signals.hpp"
 
 namespace arnoldweb::cli {
@@ -28,7 +30,8 @@ void refuse_mpirun_without_mpi() {
                                 "(install libopenmpi-dev and build again: cmake finds it), or run one process");
 }
 
-std::optional<std::string> explicit_rank_device(const std::optional<std::string>& device) {
+std::optional<std::string> explicit_rank_device(const std::optional<std::string>& device_option) {
+  const auto device = read_device_option(device_option);
   if (!g_cluster || !device) return std::nullopt;
   const auto list = device_entries(*device);
   if (list.size() < 2) return std::nullopt;
@@ -36,7 +39,7 @@ std::optional<std::string> explicit_rank_device(const std::optional<std::string>
 }
 
 std::string rank_device(const std::optional<std::string>& device_option, const std::string& scene_device) {
-  const std::string spec = device_option ? *device_option : scene_device;
+  const std::string spec = device_option ? *read_device_option(device_option) : scene_device;
   if (!g_cluster || g_cluster->size() <= 1) return spec;  // one process drives every device it names
   const auto list = device_entries(spec);
   if (list.size() > 1) return list[static_cast<std::size_t>(g_cluster->rank()) % list.size()];
@@ -67,11 +70,7 @@ int serve_rank(const std::optional<std::string>& device_option) {
   const Scene scene = parse_scene(j["text"].get<std::string>(), j["file"].get<std::string>(),
                                   j["overrides"].get<std::vector<std::string>>(),
                                   j["labels"].get<std::vector<std::string>>());
-  std::unique_ptr<Backend> pilot;
-  const Job job = plan_job(scene, [&pilot](const Scene& s) {
-    if (!pilot) pilot = open_backend("cpu");
-    return resolve_step(s, *pilot);
-  });
+  const Job job = plan_job(scene, read_plan_inputs(scene), cpu_pilot());
   auto backend = open_backend(rank_device(device_option, scene.device));
   StopSignals signals;
   RunOptions options;

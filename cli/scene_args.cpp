@@ -1,5 +1,6 @@
 #include "arnoldweb/accuracy.hpp"
 #include "arnoldweb/errors.hpp"
+#include "arnoldweb/inputs.hpp"
 #include "command.hpp"
 
 namespace arnoldweb::cli {
@@ -16,14 +17,20 @@ Scene load_scene_args(const SceneArgs& a) {
   std::vector<std::string> sets = a.sets, labels(a.sets.size());
   if (a.out) {
     if (a.out->empty()) throw OutputRefused("", "--out was given an empty directory name");
-    sets.push_back("output.dir=" + *a.out);
+    sets.push_back(string_override("output.dir", *a.out, "--out " + *a.out));
     labels.push_back("--out " + *a.out);
   }
   if (a.device) {
-    sets.push_back("run.device=" + *a.device);
+    sets.push_back(string_override("run.device", *a.device, "--device " + *a.device));
     labels.push_back("--device " + *a.device);
   }
   return load_scene(a.scene, sets, labels);
+}
+
+std::optional<std::string> read_device_option(const std::optional<std::string>& device) {
+  if (!device) return device;
+  const std::string label = "--device " + *device;
+  return parse_scene("", "", {string_override("run.device", *device, label)}, {label}).device;
 }
 
 PreparedJob prepare_job(const SceneArgs& args, bool force, std::string* device_warning) {
@@ -33,13 +40,7 @@ PreparedJob prepare_job(const SceneArgs& args, bool force, std::string* device_w
 PreparedJob prepare_scene_job(const Scene& scene, const std::string& scene_file, bool force,
                               std::string* device_warning) {
   PreparedJob p;
-  // integrator.step = "auto": a pilot on the cpu backend (in portable math
-  // the same bits as every device), opened only when a part asks for it
-  std::unique_ptr<Backend> pilot;
-  p.job = plan_job(scene, [&pilot](const Scene& s) {
-    if (!pilot) pilot = open_backend("cpu");
-    return resolve_step(s, *pilot);
-  });
+  p.job = plan_job(scene, read_plan_inputs(scene), cpu_pilot());
   p.output.force = force;
   p.output.scene_file = scene_file;
   p.output.expected_bytes = estimate_output_bytes(p.job);

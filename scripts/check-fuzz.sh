@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Fuzzes, with libFuzzer + ASan + UBSan for a bounded time each, and fails on
 # any finding (a crash, an unexpected exception, a hang > 10 s for one input, a
-# sanitizer report); prints the number of executions. Two targets:
+# sanitizer report); prints the number of executions. Three targets:
 #   scene   the scene reader and the --set parser (tests/fuzz/fuzz_scene.cpp)
 #   saved   what render and compare read back: summary.json and map.h5
 #           (tests/fuzz/fuzz_saved_run.cpp)
+#   states  a state file (ensemble.file) as read_state_file reads it, written by
+#           the harness from the input's description (tests/fuzz/fuzz_state_file.cpp)
 # Builds build-asan/ first (scripts/build-asan.sh).
 #
 #   scripts/check-fuzz.sh              60 s per target (CI)
@@ -15,12 +17,14 @@
 #
 # Seeds: tests/fuzz/corpus (real and bad scenes, with overrides) and scenes/;
 # tests/fuzz/corpus-saved (small output directories, made by
-# tests/fuzz/make_saved_corpus.py). New inputs go to build-asan/fuzz-corpus*
+# tests/fuzz/make_saved_corpus.py); tests/fuzz/corpus-states (descriptions of state
+# files, good and hostile, that the harness writes: tests/fuzz/make_state_corpus.py). New inputs go to build-asan/fuzz-corpus*
 # (kept between local runs), findings to build-asan/fuzz-artifacts/. Scene
 # inputs are at most 8192 bytes (-max_len): longer inputs reach known limits
 # of the TOML parser (a dotted header of ~35,000 keys overflows its stack,
 # multi-MB keys take minutes) that the scene reader must refuse before parsing
-# (issue 12, item 7); saved-run inputs at most 65536 (the seeds are 6-32 kB).
+# (issue 12, item 7); saved-run and state-file inputs at most 65536 (the seeds
+# are 1-32 kB).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir="${ARNOLDWEB_ASAN_BUILD_DIR:-build-asan}"
@@ -35,9 +39,9 @@ for arg in "$@"; do
 done
 [ "$runs" != "-1" ] && seconds=0  # a fixed number of inputs, however long
 
-targets="${ARNOLDWEB_FUZZ_TARGETS:-scene saved}"
+targets="${ARNOLDWEB_FUZZ_TARGETS:-scene saved states}"
 rc=0
-scripts/build-asan.sh arnoldweb_fuzz_scene arnoldweb_fuzz_saved_run || rc=$?
+scripts/build-asan.sh arnoldweb_fuzz_scene arnoldweb_fuzz_saved_run arnoldweb_fuzz_state_file || rc=$?
 [ "$rc" -eq 0 ] || exit "$rc"
 fuzzer="$build_dir/arnoldweb_fuzz_scene"
 
@@ -112,7 +116,13 @@ for t in $targets; do
       lsan_options=":suppressions=$PWD/tests/fuzz/hdf5.supp" fuzz_flags="-malloc_limit_mb=100000"
       fuzz saved "$build_dir/arnoldweb_fuzz_saved_run" tests/fuzz/saved.dict 65536 tests/fuzz/corpus-saved \
         || failed=1 ;;
-    *) echo "check-fuzz: unknown target $t (scene, saved)" >&2; exit 2 ;;
+    states)
+      # the same HDF5 allowances (the files are well-formed; the reader bounds memory by their size)
+      asan_extra=":allocator_may_return_null=1:max_allocation_size_mb=2048"
+      lsan_options=":suppressions=$PWD/tests/fuzz/hdf5.supp" fuzz_flags="-malloc_limit_mb=100000"
+      fuzz states "$build_dir/arnoldweb_fuzz_state_file" tests/fuzz/states.dict 65536 tests/fuzz/corpus-states \
+        || failed=1 ;;
+    *) echo "check-fuzz: unknown target $t (scene, saved, states)" >&2; exit 2 ;;
   esac
 done
 exit "$failed"

@@ -6,8 +6,8 @@
 #   1. build-asan/: clang-14, ASan + UBSan on every target, and the fuzz target
 #      (scripts/build-asan.sh)
 #   2. the fast suites under the sanitizers (scripts/check-sanitizers.sh)
-#   3. the scene reader, and what render and compare read back, fuzzed for
-#      60 s each (scripts/check-fuzz.sh)
+#   3. the scene reader, what render and compare read back, and state files,
+#      fuzzed for 60 s each (scripts/check-fuzz.sh)
 #
 #   scripts/check.sh            bounded, for CI (about 7 minutes on 2 cores)
 #   scripts/check.sh --long     the fuzzer for an hour instead of a minute
@@ -46,9 +46,11 @@ stage() {  # stage NAME COMMAND...
 }
 
 if stage "build-asan (clang-14, ASan+UBSan, fuzz targets)" \
-     scripts/build-asan.sh arnoldweb_tests arnoldweb-cli arnoldweb_fuzz_scene arnoldweb_fuzz_saved_run; then
+     scripts/build-asan.sh arnoldweb_tests arnoldweb-cli arnoldweb_fuzz_scene arnoldweb_fuzz_saved_run \
+       arnoldweb_fuzz_state_file; then
   stage "sanitizers (unit, parity and order on cpu and PoCL)" scripts/check-sanitizers.sh
-  stage "fuzz (scene reader and --set; summary.json and map.h5 read back)" scripts/check-fuzz.sh "${fuzz_args[@]}"
+  stage "fuzz (scene reader and --set; summary.json and map.h5 read back; state files)" \
+    scripts/check-fuzz.sh "${fuzz_args[@]}"
 else
   summary+=("SKIPPED  sanitizers, fuzz: build-asan did not build")
 fi

@@ -47,6 +47,7 @@ if ! WHEEL_DIR="$root/build-python/dist" PYTHON="$python" scripts/build-wheel.sh
   exit 1
 fi
 wheel=$(tail -n 1 "$log")
+export ARNOLDWEB_WHEEL="$wheel"  # for the docs' `pip install` commands (tests/python/test_doc_commands.py)
 echo "test-python: $(grep '^build-wheel:' "$log" | tr '\n' ' ')"
 echo "test-python: wheel built in $((SECONDS - start)) s: $wheel"
 

@@ -39,6 +39,11 @@
 # (1e8 x 5000 steps, Yoshida-6A, double; trajectory-steps/s) and Figure 4's schedule at N = 32,768,
 # the GPU rows of issue 29, each kernel variant of AW_RATES_VARIANTS (name=NVRTC options, ';'
 # between; default: the default kernel only) in turn, AW_RATES_REPEAT rounds (default 2).
+# build: only the program (build-gpu/arnoldweb) and the device list; bench/gpu/campaign.sh builds with it.
+# parity: build the program and the tests, the GPU parity suites (AW_PARITY_TESTS, a ctest regex;
+# default: parity, open runs, frequency runs and order on CUDA and NVIDIA OpenCL), then the
+# explorer's click-to-map time of a zoom of AW_ZOOM (default 10^6) trajectories on the first CUDA
+# device, over HTTP without a browser (bench/explorer/viewer.py --no-browser; docs/viewer.md).
 # Needs .device-deps/ (see docs/gpu.md): Debian packages the image lacks and
 # ../shared/gpu/device-setup.sh. Results go to $OUT (default ./gpu-out).
 set -uo pipefail
@@ -66,13 +71,15 @@ fi
 stamp "build"
 targets=""
 [ "$mode" = bench ] && targets="--target arnoldweb-cli arnoldweb_bench"
-[ "$mode" = accuracy ] || [ "$mode" = float ] || [ "$mode" = fgl ] || [ "$mode" = multi ] || [ "$mode" = rates ] &&
+[ "$mode" = accuracy ] || [ "$mode" = float ] || [ "$mode" = fgl ] || [ "$mode" = multi ] || [ "$mode" = rates ] ||
+  [ "$mode" = build ] &&
   targets="--target arnoldweb-cli"
-[ "$mode" = science ] && targets="--target arnoldweb-cli arnoldweb_tests"
+{ [ "$mode" = science ] || [ "$mode" = parity ]; } && targets="--target arnoldweb-cli arnoldweb_tests"
 if ! cmake --build build-gpu -j"$(nproc)" $targets >>"$OUT/build.txt" 2>&1; then
   grep -E "error|Error" -A4 "$OUT/build.txt" | head -60; exit 1
 fi
 build-gpu/arnoldweb devices | tee "$OUT/devices.txt"
+if [ "$mode" = build ]; then stamp "built"; exit 0; fi
 first_cuda() {  # the id of the first CUDA device
   build-gpu/arnoldweb devices --json | python3 -c "import json,sys; print(next(d['id'] for d in json.load(sys.stdin) if d['id'].startswith('cuda')))"
 }
@@ -118,6 +125,20 @@ if [ "$mode" = science ]; then
   grep -E "tests passed|Passed|Failed|\*\*\*" "$OUT/ctest.txt"
   stamp "done"
   exit 0
+fi
+if [ "$mode" = parity ]; then
+  CUDA0=$(first_cuda)
+  stamp "GPU parity suites"
+  (cd build-gpu && ctest --output-on-failure --timeout 300 \
+     -R "${AW_PARITY_TESTS:-^(parity\.cuda|parity\.opencl|open-runs\.cuda|frequency-runs\.cuda|frequency-runs\.opencl|order\.cuda)$}") \
+     >"$OUT/ctest.txt" 2>&1
+  ctest_rc=$?
+  grep -E "tests passed|Passed|Failed|\*\*\*" "$OUT/ctest.txt"
+  stamp "explorer: a zoom of ${AW_ZOOM:-1000000} trajectories on $CUDA0, request to map bytes"
+  timeout 200 python3 bench/explorer/viewer.py --cli build-gpu/arnoldweb --no-browser --device "$CUDA0" \
+    --zoom "${AW_ZOOM:-1000000}" --work /tmp/aw-viewer-bench 2>&1 | tail -3 | tee "$OUT/explorer.txt"
+  stamp "done (ctest rc=$ctest_rc)"
+  exit "$ctest_rc"
 fi
 if [ "$mode" = rates ]; then
   stamp "issue 29's GPU rows: Figure 3 (a) and Figure 4's schedule at N = 32,768 (variants: ${AW_RATES_VARIANTS:-default=})"

@@ -17,15 +17,22 @@
  * rp->model[0..5]: kinetic/aw_kinetic_ab.h) and the speed of the general form
  * (kinetic/aw_kinetic.h).
  * Its parameters are rp->model[...], filled from the scene as its descriptor
- * declares (lib/src/physics/models/<name>.cpp). The kernels are compiled with
- * -DAW_MODEL=<id>; models/aw_models.h, generated from the list of headers
- * (cmake/ArnoldwebModels.cmake), includes the one asked for.
+ * declares (lib/src/physics/models/<name>.cpp). OpenCL and CUDA kernels are
+ * compiled with -DAW_MODEL=<id>; models/aw_models.h, generated from the list of
+ * headers (cmake/ArnoldwebModels.cmake), includes the one asked for. What is
+ * compiled ahead for one model (the cpu backend's kernel variants, the host's
+ * copy of a model) names its header as AW_MODEL_HEADER instead, and so depends
+ * on no other model's header nor on the list: adding a model rebuilds none of it.
  */
 
 #ifndef AW_MODEL_H
 #define AW_MODEL_H
 
+#ifdef AW_MODEL_HEADER
+#include AW_MODEL_HEADER
+#else
 #include "models/aw_models.h"
+#endif
 
 AW_FN void aw_force(aw_lstate* s, AW_CONSTANT aw_rparams* rp) { aw_model_force(s, rp); }
 

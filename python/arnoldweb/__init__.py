@@ -17,6 +17,7 @@ See docs/python.md.
 from . import _arnoldweb as _core
 from ._errors import BuildError, DeviceError, Error, OutputError, OutputRefused, PlanWarning, SceneError, StateError
 from ._result import COUNTER_NAMES, INDICATOR_NAMES, Result
+from ._explorer import serve, view
 from ._run import accuracy, check_states, continue_run, run
 from ._saved import load
 from ._scene import Scene
@@ -24,7 +25,7 @@ from ._scenes import scene, scenes
 
 __version__: str = _core.__version__
 
-__all__ = ["Scene", "Result", "run", "continue_run", "load", "scene", "scenes", "accuracy", "check_states", "devices", "methods",
+__all__ = ["Scene", "Result", "run", "continue_run", "load", "view", "serve", "scene", "scenes", "accuracy", "check_states", "devices", "methods",
            "scene_keys", "backend_problems", "default_device", "pixel_directions", "resonances", "compare_maps", "Error",
            "SceneError", "DeviceError", "BuildError", "OutputError", "OutputRefused", "PlanWarning", "StateError",
            "COUNTER_NAMES", "INDICATOR_NAMES", "__version__"]

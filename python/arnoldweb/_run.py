@@ -51,7 +51,7 @@ def run(scene: SceneLike, device: Optional[str] = None,
     """
     s = _scene_of(scene)
     if device is not None:
-        s._apply(f"run.device={device}", f"device={device!r}")
+        s._apply(f"run.device={_quote(device)}", f"device={device!r}")
     x = p = None
     if initial is not None:
         x, p = (np.ascontiguousarray(a, dtype=np.float64) for a in _pair(initial))
@@ -89,16 +89,19 @@ def continue_run(out_dir: "str | os.PathLike[str]", duration: float, device: Opt
     summary.json records: OutputError otherwise), for ``duration`` more T. A run of 2T is bit for
     bit a run of T continued for T (the final states, and the map of the second window).
 
-    ``sets``: further keys, as ``{"observe.fli": True}`` (those of the outputs; a key that changes
-    the trajectories makes another run). ``device``, ``progress``, ``out`` and ``force`` as in
+    ``sets``: further keys, as ``{"observe.fli": True}``: only keys that leave the trajectories
+    unchanged (outputs, device, checkpoints; docs/cluster.md), else SceneError; ``run.duration``
+    is ``duration``. ``device``, ``progress``, ``out`` and ``force`` as in
     :func:`run`: with ``out`` None nothing is written. Raises OutputError (no summary.json, no
     final states, a damaged states.h5), SceneError, DeviceError, StateError."""
     if not (isinstance(duration, (int, float)) and duration > 0 and duration != float("inf")):
         raise ValueError(f"duration must be a time in T greater than 0, not {duration!r}")
-    c = _core._continuation_of(os.path.abspath(os.fspath(out_dir)), float(duration))
+    from ._toml import literal
+    items = list((sets or {}).items())
+    c = _core._continuation_of(os.path.abspath(os.fspath(out_dir)), float(duration),
+                               [f"{k}={literal(v)}" for k, v in items],
+                               [f"sets[{k!r}] = {v!r}" for k, v in items])
     s = Scene._make(c["scene_toml"], c["source"], c["overrides"], c["labels"])
-    for key, value in (sets or {}).items():
-        s = s.set(key, value)
     return run(s, device=device, progress=progress, out=out, force=force)
 
 
@@ -135,7 +138,7 @@ def accuracy(scene: SceneLike, target: Optional[float] = None, device: Optional[
     found, why_not. Computes only the pilot; writes nothing."""
     s = _scene_of(scene)
     if device is not None:
-        s._apply(f"run.device={device}", f"device={device!r}")
+        s._apply(f"run.device={_quote(device)}", f"device={device!r}")
     if target is not None and not (0 < target < 1):
         raise ValueError(f"target must be greater than 0 and less than 1, got {target}")
     if not 1 <= safety <= 1000:

@@ -24,11 +24,12 @@ def _h5py(path: str):
 
 
 def _checked(path: str):
-    """The file at path (in an output directory) as a file object of its bytes, read by the library's
-    reader of saved runs: a plain file with the size and digest summary.json records (OutputError
-    naming it otherwise). h5py then reads exactly the bytes that were checked."""
+    """The HDF5 file at path (in an output directory) as a file object of its bytes, read by the
+    library's reader of saved runs: a plain file with the size and digest summary.json records,
+    holding nothing that leads out of it (external links, external storage, virtual datasets;
+    OutputError naming it otherwise). h5py then reads exactly the bytes that were checked."""
     folder, name = os.path.split(path)
-    return io.BytesIO(_core._read_saved_file(folder, name))
+    return io.BytesIO(_core._read_saved_hdf5_file(folder, name))
 
 
 def _states(path: str) -> Optional[dict]:

@@ -49,7 +49,8 @@ nb::dict accuracy(const arnoldweb::Scene& scene, double target, double safety, s
   {
     nb::gil_scoped_release unlocked;
     auto backend = arnoldweb::open_backend(scene.device);
-    r = arnoldweb::assess_accuracy(scene, *backend, target > 0 ? target : scene.tolerance, o);
+    r = arnoldweb::assess_accuracy(scene, arnoldweb::read_plan_inputs(scene), *backend,
+                                   target > 0 ? target : scene.tolerance, o);
   }
   nb::dict d;
   d["device"] = r.device;

@@ -3,7 +3,8 @@
 // compare` and `arnoldweb render`), for arnoldweb.load(). The map's digest is
 // computed here as summary.json's is, so the package can check the file; every
 // other file (summary.json, states.h5, indicators.h5) comes through the same
-// checked reader (read_saved_summary, read_saved_file).
+// checked reader (read_saved_summary, read_saved_file; HDF5 files also
+// through the HDF5 reader's policy: read_saved_hdf5_file).
 #include "bindings.hpp"
 
 #include <nanobind/stl/string.h>
@@ -43,6 +44,17 @@ nb::dict read_maps(const std::string& dir) {
   return d;
 }
 
+// The bytes of a file of an output directory as `read` gives them, read without the GIL.
+nb::bytes saved_bytes(std::string (*read)(const std::string&, const std::string&), const std::string& dir,
+                      const std::string& name) {
+  std::string bytes;
+  {
+    nb::gil_scoped_release unlocked;
+    bytes = read(dir, name);
+  }
+  return nb::bytes(bytes.data(), bytes.size());
+}
+
 }  // namespace
 
 void bind_saved(nb::module_& m) {
@@ -69,21 +81,19 @@ void bind_saved(nb::module_& m) {
       "(a plain file, a JSON object of the right form; OutputError otherwise).");
   m.def(
       "_read_saved_file",
-      [](const std::string& dir, const std::string& name) {
-        std::string bytes;
-        {
-          nb::gil_scoped_release unlocked;
-          bytes = arnoldweb::read_saved_file(dir, name);
-        }
-        return nb::bytes(bytes.data(), bytes.size());
-      },
+      [](const std::string& dir, const std::string& name) { return saved_bytes(arnoldweb::read_saved_file, dir, name); },
       nb::arg("dir"), nb::arg("name"),
       "The bytes of a file of an output directory, checked against the size and digest summary.json "
       "records (OutputError naming it otherwise).");
   m.def(
       "_continuation_of",
-      [](const std::string& dir, double duration) {
-        const arnoldweb::Continuation c = arnoldweb::continuation_of(dir, duration);
+      [](const std::string& dir, double duration, const std::vector<std::string>& sets,
+         const std::vector<std::string>& labels) {
+        arnoldweb::ContinueArgs args;
+        args.duration = duration;
+        args.sets = sets;
+        args.set_labels = labels;
+        const arnoldweb::Continuation c = arnoldweb::continuation_of(dir, args);
         nb::dict d;
         d["scene_toml"] = c.scene_toml;
         d["source"] = c.source;
@@ -92,9 +102,18 @@ void bind_saved(nb::module_& m) {
         d["labels"] = c.labels;
         return d;
       },
-      nb::arg("dir"), nb::arg("duration"),
+      nb::arg("dir"), nb::arg("duration"), nb::arg("sets"), nb::arg("labels"),
       "What continuing the finished run in dir starts from: its scene as it ran and the overrides "
-      "that start it from its checked states.h5 (arnoldweb::continuation_of).");
+      "that start it from its checked states.h5, then `sets` (keys that leave the trajectories "
+      "unchanged; SceneError otherwise) (arnoldweb::continuation_of).");
+  m.def(
+      "_read_saved_hdf5_file",
+      [](const std::string& dir, const std::string& name) {
+        return saved_bytes(arnoldweb::read_saved_hdf5_file, dir, name);
+      },
+      nb::arg("dir"), nb::arg("name"),
+      "The bytes of an HDF5 file of an output directory, checked as _read_saved_file checks them "
+      "and by the HDF5 reader's policy (nothing leads out of the file; OutputError otherwise).");
   m.def("_read_maps", &read_maps, nb::arg("dir"),
         "The maps of an output directory (summary.json, map.h5): nside, map, frames, zoom and the "
         "map's digest as summary.json computes it. Raises OutputError naming a missing or bad file.");

@@ -9,13 +9,7 @@ namespace awpy {
 
 arnoldweb::Job plan_scene(const arnoldweb::Scene& scene, std::shared_ptr<const arnoldweb::StateSet> states) {
   nb::gil_scoped_release unlocked;
-  // integrator.step = "auto": a pilot on the cpu backend (in portable math
-  // the same bits as every device), opened only when a part asks for it
-  std::unique_ptr<arnoldweb::Backend> pilot;
-  return arnoldweb::plan_job(scene, [&pilot](const arnoldweb::Scene& s) {
-    if (!pilot) pilot = arnoldweb::open_backend("cpu");
-    return arnoldweb::resolve_step(s, *pilot);
-  }, std::move(states));
+  return arnoldweb::plan_job(scene, arnoldweb::read_plan_inputs(scene, std::move(states)), arnoldweb::cpu_pilot());
 }
 
 namespace {

@@ -32,7 +32,7 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 // The stages a scene with step = "auto" goes through: resolve, then plan.
 Plan auto_plan(const Scene& s) {
   auto cpu = open_backend("cpu");
-  return make_plan(resolve_step(s, *cpu));
+  return make_plan(resolve_step(s, {}, *cpu));
 }
 
 }  // namespace
@@ -99,7 +99,7 @@ TEST_SUITE("core") {
     PilotOptions o;
     o.trajectories = 256;
     o.duration = 2;
-    const AccuracyReport r = assess_accuracy(s, *cpu, 1e-8, o);
+    const AccuracyReport r = assess_accuracy(s, {}, *cpu, 1e-8, o);
     CHECK(r.pilot_trajectories == 256);
     CHECK(r.pilot_duration == 2);
     CHECK(r.pilot_every == 1);
@@ -135,9 +135,9 @@ TEST_SUITE("core") {
       PilotOptions o;
       o.trajectories = 256;
       o.duration = 2;
-      const AccuracyReport with = assess_accuracy(s, *cpu, 1e-8, o);
+      const AccuracyReport with = assess_accuracy(s, {}, *cpu, 1e-8, o);
       o.prefilter = false;
-      const AccuracyReport without = assess_accuracy(s, *cpu, 1e-8, o);
+      const AccuracyReport without = assess_accuracy(s, {}, *cpu, 1e-8, o);
       REQUIRE(with.found);
       REQUIRE(without.found);
       CHECK(with.best.method == without.best.method);

@@ -16,6 +16,7 @@
 #include "aw_params.h"
 #include "backends/cuda/kernel_cache.hpp"
 #include "backends/cuda/nvrtc_compiler.hpp"
+#include "physics/model_table.hpp"
 #include "support.hpp"
 
 namespace {
@@ -126,7 +127,14 @@ TEST_SUITE("nvrtc") {
   }
 
   TEST_CASE("every model's kernel compiles for sm_90 (double and float, every effect, both stepper kinds)") {
-    for (int model : {1, 2})  // AW_MODEL_FGL, AW_MODEL_FOURIER (lib/device/models/aw_models.h)
+    int models = 0;
+    for (const detail::ModelDescriptor& m : detail::models()) {
+      // the table's built-ins but the default, compiled in every configuration above (an
+      // expression model's kernel: tests/backends/test_expression_nvrtc.cpp)
+      if (!m.host || m.id == KernelConfig{}.model) continue;
+      ++models;
+      const int model = m.id;
+      CAPTURE(m.name);
       for (Precision precision : {Precision::Double, Precision::Float})
         for (int kick_first : {0, 1}) {
           KernelConfig k;
@@ -144,6 +152,8 @@ TEST_SUITE("nvrtc") {
             FAIL_CHECK(e.what());
           }
         }
+    }
+    CHECK(models > 0);
   }
 
   TEST_CASE("PTX for a chip newer than NVRTC knows") {

@@ -3,11 +3,15 @@
 // Exit codes: 2 bad input, 3 output problem, 4 device problem.
 #include <doctest/doctest.h>
 
+#include <hdf5.h>
+
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
 #include "backends/backends.hpp"
+#include "run_outputs.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -109,6 +113,117 @@ TEST_SUITE("cli") {
     const arnoldweb::Plan pf =
         arnoldweb::make_plan(awtest::scene_from("[integrator]\nprecision = \"float\"\n", {}, "<fp64>"));
     CHECK_NOTHROW(arnoldweb::detail::require_fp64(pf, d));
+  }
+
+  TEST_CASE("issue 37: --device is read as run.device is, and its errors name --device with the value escaped") {
+    const std::string dir = awtest::temp_dir("cli-device");
+    const std::string scene = dir + "/scene.toml";
+    std::ofstream(scene) << kGood;
+    std::string out;
+    // the value as it is: blanks around the id, or TOML that reads as cpu ('"cpu" #' ran on cpu), name no
+    // device; check and run agree
+    for (const char* device : {" cpu", "\"cpu\" #", "\"cpu\"", "'cpu'"}) {
+      CAPTURE(device);
+      for (const char* command : {"check", "run"}) {
+        CHECK(awtest::run_cli({command, scene, "--device", device, "--out", dir + "/blank"}, &out) == 2);
+        CAPTURE(out);
+        CHECK(contains(out, "error: --device " + arnoldweb::printable(device) + ": run.device: must be "));
+        CHECK_FALSE(fs::exists(dir + "/blank"));
+      }
+    }
+    CHECK(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", dir + "/plain"}, &out) == 0);
+    CHECK(fs::exists(dir + "/plain/summary.json"));
+    // an index with a leading zero names no device: refused as a form, like the scene's run.device
+    for (const char* command : {"check", "run"}) {
+      CAPTURE(command);
+      CHECK(awtest::run_cli({command, scene, "--device", "opencl:00", "--out", dir + "/zero"}, &out) == 2);
+      CHECK(contains(out, "error: --device opencl:00: run.device: must be "));
+      CHECK(contains(out, "got \"opencl:00\""));
+      CHECK_FALSE(contains(out, "<scene>"));
+      CHECK_FALSE(fs::exists(dir + "/zero"));
+    }
+    // a control character is echoed as an escape, never raw
+    CHECK(awtest::run_cli({"run", scene, "--device", "cpu\nx\x1b[2J", "--out", dir + "/nl"}, &out) == 2);
+    CHECK(contains(out, "error: --device cpu\\nx\\u001b[2J: run.device: must be "));
+    CHECK(out.find('\x1b') == std::string::npos);
+    CHECK(std::count(out.begin(), out.end(), '\n') == 1);
+    CHECK(awtest::run_cli({"check", scene, "--out", dir + "/a\x1b[2Jb"}, &out) == 0);
+    CHECK(contains(out, "a\\u001b[2Jb"));
+    CHECK(out.find('\x1b') == std::string::npos);
+  }
+
+  TEST_CASE("issue 37: --out is a directory's name as it is, never read as TOML") {
+    const std::string dir = awtest::temp_dir("cli-out-names");
+    std::ofstream(dir + "/scene.toml")
+        << kGood << "[[panel]]\nname = \"a\"\ntitle = \"A\"\nset = [\"model.energy=16\"]\n";
+    awtest::CliOptions here;
+    here.cwd = dir;
+    std::string out;
+    // each would be read as TOML (a string and a comment, a quote, a table, an escape) or lose its
+    // blanks: '"q" #' wrote to q; the panels' directories are built from it too
+    for (const std::string name : {"\"q\" #", "'q' # x", "a\"b", " lead and trail ", "two\nlines", "back\\slash\\n",
+                                   "\"\"\"triple", "[t]\nk = 1", "x = 1", "\u00e9t\u00e9 \U0001f310 # \"", "tab\there"}) {
+      CAPTURE(arnoldweb::printable(name));
+      CHECK(awtest::run_cli({"check", "scene.toml", "--out", name}, &out, here) == 0);
+      CHECK(contains(out, arnoldweb::printable(name)));
+      REQUIRE(awtest::run_cli({"run", "scene.toml", "--quiet", "--device", "cpu", "--out", name}, &out, here) == 0);
+      CAPTURE(out);
+      CHECK(fs::exists(dir + "/" + name + "/summary.json"));
+      CHECK(fs::exists(dir + "/" + name + "/panel-a/summary.json"));
+      CHECK(awtest::summary_of(dir + "/" + name)["scene"]["output"]["dir"] == name);
+      CHECK(awtest::summary_of(dir + "/" + name + "/panel-a")["scene"]["output"]["dir"] == name + "/panel-a");
+      fs::remove_all(dir + "/" + name);
+    }
+    for (const char* other : {"q", "'q'", "a", "lead and trail", "two", "t", "x"}) CHECK_FALSE(fs::exists(dir + "/" + other));
+    // a name that is not UTF-8 cannot be recorded in the scene (TOML): refused, nothing written
+    CHECK(awtest::run_cli({"run", "scene.toml", "--quiet", "--out", "odd-\xff-name"}, &out, here) == 2);
+    CHECK(contains(out, "error: --out odd-\\xff-name: output.dir: is not UTF-8 text"));
+    CHECK_FALSE(fs::exists(dir + "/odd-\xff-name"));
+  }
+
+  TEST_CASE("issue 37: observe.diffusion: directions refused when checked; actions sampled finer than the energy") {
+    const std::string dir = awtest::temp_dir("cli-diffusion");
+    const std::string scene = dir + "/scene.toml";
+    std::ofstream(scene) << "[model]\nkind = \"fgl\"\nepsilon = 0.01\nenergy = 0.5\n"
+                            "[ensemble]\ninitial = \"grid\"\n"
+                            "grid = { kind = \"plane\", resolution = [4, 4], range1 = [0.29, 0.31], range2 = [0.29, 0.31], axes = [0, 1] }\n"
+                            "[integrator]\nmethod = \"saba3\"\nstep = 0.02\n[run]\naverage = 4.0\nduration = 4.0\n"
+                            "[observe]\nvelocity_map = false\nenergy_error = { every = 1.0 }\n[output]\nimages = false\n";
+    const std::string on = "observe.diffusion={ every = 0.5, along = [1, 1, 0], across = [1, -1, 0], fit_from = 1 }";
+    std::string out;
+    // [1e200, 1e200, 0] ran with zero moments, [1e-170, 1e-170, 0] ran and wrote no diffusion.csv: both refused
+    for (const char* along : {"[1e200, 1e200, 0]", "[1e-170, 1e-170, 0]"}) {
+      CAPTURE(along);
+      for (const char* command : {"check", "run"}) {
+        CHECK(awtest::run_cli({command, scene, "--device", "cpu", "--set", on, "--set",
+                               std::string("observe.diffusion.along=") + along, "--out", dir + "/bad"},
+                              &out) == 2);
+        CHECK(contains(out, "observe.diffusion.along: must be an array [a, b, c] of floats, largest absolute component "
+                            "from 1e-150 to 1e150"));
+        CHECK_FALSE(fs::exists(dir + "/bad"));
+      }
+    }
+    // every 0.5 T under an energy interval of 1 T (the documented rule: every interval a multiple of
+    // the shortest): the actions at every 0.5 T, the energy sampled as without them
+    REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--set", on, "--out", dir + "/fine"}, &out) == 0);
+    REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", dir + "/plain"}, &out) == 0);
+    const auto fine = awtest::summary_of(dir + "/fine"), plain = awtest::summary_of(dir + "/plain");
+    CHECK(fine["energy_error"]["max"] == plain["energy_error"]["max"]);
+    CHECK(fine["energy_error"]["mean"] == plain["energy_error"]["mean"]);
+    const auto t = fine["analyses"]["diffusion"]["moments"]["t"];
+    REQUIRE(t.size() == 9);
+    for (std::size_t k = 0; k < t.size(); ++k) CHECK(t[k].get<double>() == 0.5 * static_cast<double>(k));
+    // diffusion.h5 names its interval `every` (docs/outputs.md)
+    const hid_t f = H5Fopen((dir + "/fine/diffusion.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    REQUIRE(f >= 0);
+    CHECK(H5Aexists(f, "diffusion_every") == 0);
+    REQUIRE(H5Aexists(f, "every") > 0);
+    const hid_t a = H5Aopen(f, "every", H5P_DEFAULT);
+    double every = 0;
+    H5Aread(a, H5T_NATIVE_DOUBLE, &every);
+    H5Aclose(a);
+    H5Fclose(f);
+    CHECK(every == 0.5);
   }
 
   TEST_CASE("check prints the plan; every command has --help") {

@@ -15,12 +15,17 @@
 // map.h5 gets the true size and digest of the map.h5 at hand written in
 // before it is read (the seeds hold both kinds).
 //
+// A FIFO, fifo.h5, lies beside them: the seeds whose map.h5 leads out of the
+// file (an external link, external storage, a virtual dataset) name it.
+//
 // Expected outcomes: the maps, or an arnoldweb::Error with a message.
 // Findings: any other exception, a crash, a hang, a sanitizer report, an
 // HDF5 object left open.
 // Declared shapes are bounded (nside <= 256, zoom <= 1024) so that an input
 // cannot ask for gigabytes of map: larger ones only allocate more.
 #include <hdf5.h>
+#include <sys/stat.h>
+
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
@@ -94,6 +99,9 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
   std::string templ = (fs::temp_directory_path() / "arnoldweb-fuzz-saved-XXXXXX").string();
   if (!mkdtemp(templ.data())) finding("the harness", "cannot make a temporary directory");
   g_dir = templ;
+  // what the seeds' external links, external storage and virtual datasets of map.h5 name: a
+  // read of it blocks, which libFuzzer reports as a timeout (the reader must refuse them first)
+  if (::mkfifo((g_dir + "/fifo.h5").c_str(), 0600) != 0) finding("the harness", "cannot make its FIFO");
   std::atexit([] {
     std::error_code ec;
     fs::remove_all(g_dir, ec);

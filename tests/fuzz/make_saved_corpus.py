@@ -1,10 +1,14 @@
 #!/usr/bin/env python3
 """Makes the seeds of the fuzz target of render/compare inputs (fuzz_saved_run.cpp):
 small output directories written by the arnoldweb CLI, each as summary.json, a NUL byte and
-map.h5, in tests/fuzz/corpus-saved/. Run it again when summary.json or map.h5 change:
+map.h5, in tests/fuzz/corpus-saved/, and map.h5 files that lead out of themselves (an external
+link, external storage, a virtual dataset, all naming the harness's FIFO fifo.h5) or declare
+more than they store, written with h5py. Run it again when summary.json or map.h5 change, with
+a Python that has h5py (Debian: python3-h5py):
 
-    tests/fuzz/make_saved_corpus.py [build/arnoldweb]
+    /usr/bin/python3 tests/fuzz/make_saved_corpus.py [build/arnoldweb]
 """
+import io
 import json
 import pathlib
 import subprocess
@@ -44,6 +48,35 @@ def seed(summary: dict, map_bytes) -> bytes:
     return text if map_bytes is None else text + b"\0" + map_bytes
 
 
+def hostile_maps(npix: int) -> dict:
+    """map.h5 files that the HDF5 reader refuses (docs/reliability.md, "Reading HDF5 files")."""
+    import h5py
+    import numpy as np
+
+    def external_link(f):
+        f["map"] = h5py.ExternalLink("fifo.h5", "/map")
+
+    def external_storage(f):
+        f.create_dataset("map", shape=(npix,), dtype="u8", external=[("fifo.h5", 0, npix * 8)])
+
+    def virtual(f):
+        layout = h5py.VirtualLayout(shape=(npix,), dtype="u8")
+        layout[:] = h5py.VirtualSource("fifo.h5", "/map", shape=(npix,))
+        f.create_virtual_dataset("map", layout)
+
+    def unwritten(f):
+        f.create_dataset("map", shape=(npix,), dtype="u8", chunks=(64,))
+        f["map"].attrs["nside"] = np.int64(round((npix / 12) ** 0.5))
+
+    out = {}
+    for write in (external_link, external_storage, virtual, unwritten):
+        buf = io.BytesIO()
+        with h5py.File(buf, "w") as f:
+            write(f)
+        out[write.__name__.replace("_", "-")] = buf.getvalue()
+    return out
+
+
 def main() -> None:
     out = HERE / "corpus-saved"
     out.mkdir(exist_ok=True)
@@ -67,6 +100,11 @@ def main() -> None:
             older = {k: v for k, v in summary.items() if k != "file_digests"}  # before the digests
             (out / (name + "-older")).write_bytes(seed(older, map_bytes))
         (out / "summary-without-map").write_bytes(seed(summary, None))
+        # map.h5 that leads out of itself, its digest trusted (so that it reaches the HDF5 reader)
+        for name, map_bytes in hostile_maps(12 * summary["maps"]["nside"] ** 2).items():
+            trusted = json.loads(json.dumps(summary))
+            trusted["file_digests"]["map.h5"]["xxh3_128"] = "trust"
+            (out / ("map-" + name + "-trust")).write_bytes(seed(trusted, map_bytes))
 
 
 if __name__ == "__main__":

@@ -203,7 +203,16 @@ TEST_SUITE("output") {
     for (const auto& f : listed)
       if (f.get<std::string>() != "summary.json") older = f.get<std::string>();
     REQUIRE_FALSE(older.empty());
+    write_outputs(p, small_result(), ours, force);
+    CHECK(fs::file_size(ours + "/" + older) > 100);
+    // a file changed since the run wrote it is no longer the run's: its digest in summary.json
+    // does not match, and --force leaves it, and the directory, alone (issue 37, item 8)
     std::ofstream(ours + "/" + older) << "an older file";
+    const std::string changed = older + " (changed since the run wrote it)";
+    CHECK_THROWS_WITH_AS(write_outputs(p, small_result(), ours, force), doctest::Contains(changed.c_str()),
+                         OutputRefused);
+    CHECK(fs::file_size(ours + "/" + older) == 13);
+    fs::remove(ours + "/" + older);
     write_outputs(p, small_result(), ours, force);
     CHECK(fs::file_size(ours + "/" + older) > 100);
     // ... but not after the user put a file of their own into it

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "aw_params.h"
+#include "physics/model_table.hpp"
 #include "plan/output_table.hpp"
 #include "plan/plan_params.hpp"
 #include "support.hpp"
@@ -42,9 +43,10 @@ void check_same_plan(const Plan& a, const Plan& b) {
 
 TEST_SUITE("plan") {
   TEST_CASE("with_step and with_trajectories give the plans of the scene planned with that step or number") {
-    for (const char* model : {"seibert2011", "fgl", "fourier"}) {
-      CAPTURE(model);
-      const std::vector<std::string> sets = {awtest::set("model.kind", model), "model.energy=1.5",
+    for (const detail::ModelDescriptor& m : detail::models()) {
+      if (!m.host) continue;  // the built-ins (the expression kind is a scene's own row)
+      CAPTURE(m.name);
+      const std::vector<std::string> sets = {awtest::set("model.kind", m.name), "model.energy=1.5",
                                              "integrator.method=\"pefrl\"", "integrator.allow_unsafe_step=true",
                                              "run.average=2", "run.duration=4", "observe.energy_error.every=1",
                                              "observe.final_states=true", "observe.fli=true"};
@@ -137,5 +139,37 @@ TEST_SUITE("plan") {
       CHECK(static_cast<double>((m + AW_SERIES_BLOCK - 1) / AW_SERIES_BLOCK * AW_SERIES_BLOCK) * series < 2147483648.0);
       CHECK(largest_chunk(plan, cuda) > 100000);
     }
+  }
+
+  // A launch counts a pixel's windows in 32 bits: trajectories x windows binned per launch below
+  // 2^32. A time-sliced launch bins one slice's windows, not the run's: Figure 4 at 10^7 T
+  // (10^6 windows) in slices of 10240 T is one launch of its 32,768 trajectories per slice, where
+  // the bound over the whole run cut it into launches of 4000 (a GPU a fraction full; issue 41).
+  TEST_CASE("largest_chunk: a time slice's windows bound a sliced launch, the run's an unsliced one") {
+    const std::string toml = R"(
+      [ensemble]
+      trajectories = 32768
+      [integrator]
+      method = "yoshida6a"
+      step = 0.01
+      [run]
+      average = 10
+      duration = 10000000
+      [observe]
+      energy_error = { every = 10 }
+      final_states = true
+    )";
+    const Plan whole = make_plan(awtest::scene_from(toml, {}, "<fig4>"));
+    CHECK(whole.windows == 1000000);
+    CHECK(largest_chunk(whole) == 4000);
+    const Plan sliced = make_plan(awtest::scene_from(toml, {"run.slice=10240"}, "<fig4>"));
+    REQUIRE(sliced.slices == 977);
+    CHECK(largest_chunk(sliced) == 32768);
+    // long slices of many trajectories: the slice's windows, and one begun in the slice before
+    const Plan many = make_plan(awtest::scene_from(toml, {"ensemble.trajectories=8000000", "run.slice=81920"}, "<fig4>"));
+    CHECK(largest_chunk(many) == 4000000000ull / 8193);
+    // a slice shorter than a window bins at most one window per launch
+    const Plan thin = make_plan(awtest::scene_from(toml, {"run.slice=20", "run.average=100", "run.duration=200000"}, "<fig4>"));
+    CHECK(largest_chunk(thin) == 32768);
   }
 }

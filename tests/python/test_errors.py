@@ -73,6 +73,16 @@ def test_device_lists_refused_before_any_work(small_scene):
     assert e.value.device == "opencl:99"
 
 
+def test_device_is_a_value_never_toml(small_scene):
+    # '"cpu" #' was spliced into TOML and read as cpu (issue 37): the text as it is names no device
+    for device in ('"cpu" #', ' cpu'):
+        with pytest.raises(aw.SceneError) as e:
+            aw.run(small_scene, device=device)
+        assert e.value.key == "run.device"
+        with pytest.raises(aw.SceneError):
+            aw.accuracy(small_scene, device=device)
+
+
 def test_output_rules(small_scene, tmp_path):
     out = tmp_path / "res"
     r = aw.run(small_scene, out=out)

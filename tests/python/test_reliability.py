@@ -1,6 +1,8 @@
 """Reliability of what the package compares and reads back (issue 27): compare_maps refuses what
 is not a map of counts instead of casting it (item 13), and Result.summary reads summary.json
-as render and compare read it, checked (items 2 to 4)."""
+as render and compare read it, checked (items 2 to 4); the HDF5 files load hands to h5py and
+continue_run's sets go through the library's rules (issue 37, items 1 and 7)."""
+import json
 import os
 import threading
 
@@ -101,3 +103,35 @@ def test_load_checks_every_file_it_reads(tmp_path):
     t.join(10)
     assert done, "aw.load blocked on a FIFO as summary.json"
     assert "pipe (FIFO)" in str(done[0].value)
+
+
+def test_load_refuses_hdf5_files_that_lead_out_of_themselves(small_scene, tmp_path):
+    """Issue 37, item 1: the HDF5 files that load hands to h5py go through the library's HDF5
+    reader first: an external link to a FIFO is refused at once (h5py would block on it)."""
+    import h5py
+    out = tmp_path / "run"
+    aw.run(small_scene.copy().set("observe.final_states", True), out=out)
+    os.mkfifo(tmp_path / "fifo.h5")
+    os.remove(out / "states.h5")
+    with h5py.File(out / "states.h5", "w") as f:
+        f["final/momentum"] = h5py.ExternalLink(str(tmp_path / "fifo.h5"), "/momentum")
+    j = json.loads((out / "summary.json").read_text())
+    del j["file_digests"]  # an older directory: read without digests, still by the reader's policy
+    (out / "summary.json").write_text(json.dumps(j))
+    done = []
+    t = threading.Thread(target=lambda: done.append(pytest.raises(aw.OutputError, lambda: aw.load(out).states)),
+                         daemon=True)
+    t.start()
+    t.join(20)
+    assert done, "aw.load blocked on an external link to a FIFO"
+    assert "/final/momentum is an external link" in str(done[0].value)
+
+
+def test_continue_run_sets_only_keys_that_keep_the_trajectories(small_scene, tmp_path):
+    """Issue 37, item 7: continue_run's sets go through the library's one list (continue_keys)."""
+    small_scene.set("observe.final_states", True)
+    aw.run(small_scene, out=tmp_path / "first")
+    with pytest.raises(aw.SceneError, match="a continuation keeps the run's trajectories"):
+        aw.continue_run(tmp_path / "first", 5.0, sets={"integrator.step": 0.01})
+    with pytest.raises(aw.SceneError, match="runs for the duration it is given"):
+        aw.continue_run(tmp_path / "first", 5.0, sets={"run.duration": 10.0})

@@ -274,11 +274,52 @@ TEST_SUITE("reliability") {
     // `check` refuses them just the same
     CHECK(awtest::run_cli({"check", scene, "--out", "/proc/arnoldweb-out"}, &out) == 3);
     CHECK(awtest::run_cli({"check", scene, "--out", ""}, &out) == 2);
-    // a name that is not UTF-8 is written safely
+    // a name that is not UTF-8 is refused: the scene (TOML, in summary.json) could not record it, and
+    // recorded as U+FFFD it would name another directory
     const std::string odd = root + "/odd-\xff\xfe-name";
-    CHECK(awtest::run_cli(run_args(scene, odd), &out) == 0);
-    const auto j = summary_of(odd);
-    CHECK(contains(j["scene"]["output"]["dir"].get<std::string>(), "odd-"));
+    CHECK(awtest::run_cli(run_args(scene, odd), &out) == 2);
+    CHECK(contains(out, "odd-\\xff\\xfe-name: output.dir: is not UTF-8 text"));
+    CHECK_FALSE(fs::exists(odd));
+  }
+
+  TEST_CASE("issue 37, 8. --force deletes only files whose digest summary.json records, and still matches") {
+    const std::string root = awtest::temp_dir("force-digests");
+    const std::string scene = write_scene(root);
+    std::string out;
+    const std::string dir = root + "/out";
+    REQUIRE(awtest::run_cli(run_args(scene, dir), &out) == 0);
+    const std::string summary = slurp(dir + "/summary.json");
+    // a summary.json (copied from elsewhere) that lists the user's thesis.tex in "files", with no digest:
+    // deleted by --force before
+    nlohmann::json j = nlohmann::json::parse(summary);
+    j["files"].push_back("thesis.tex");
+    std::ofstream(dir + "/summary.json") << j.dump(2);
+    std::ofstream(dir + "/thesis.tex") << "\\chapter{Mine}";
+    CHECK(awtest::run_cli(run_args(scene, dir, {"--force"}), &out) == 2);
+    CAPTURE(out);
+    CHECK(contains(out, "it holds files that arnoldweb did not write (thesis.tex)"));
+    CHECK(slurp(dir + "/thesis.tex") == "\\chapter{Mine}");
+    fs::remove(dir + "/thesis.tex");
+    // an output changed since the run wrote it is no longer the run's
+    std::ofstream(dir + "/summary.json") << summary;
+    std::ofstream(dir + "/map.h5", std::ios::app | std::ios::binary) << "edited";
+    const std::string edited = slurp(dir + "/map.h5");
+    CHECK(awtest::run_cli(run_args(scene, dir, {"--force"}), &out) == 2);
+    CHECK(contains(out, "map.h5 (changed since the run wrote it)"));
+    CHECK(slurp(dir + "/map.h5") == edited);
+    // a directory whose summary.json records no digests (before 2026-11-26): nothing tells its files
+    // from a user's, so it is refused rather than guessed at
+    j = nlohmann::json::parse(summary);
+    j.erase("file_digests");
+    std::ofstream(dir + "/summary.json") << j.dump(2);
+    CHECK(awtest::run_cli(run_args(scene, dir, {"--force"}), &out) == 2);
+    CHECK(contains(out, "records no file digests"));
+    CHECK(slurp(dir + "/map.h5") == edited);
+    // the run's own, unchanged, is replaced
+    const std::string mine = root + "/mine";
+    REQUIRE(awtest::run_cli(run_args(scene, mine), &out) == 0);
+    CHECK(awtest::run_cli(run_args(scene, mine, {"--force", "--set", "ensemble.seed=7"}), &out) == 0);
+    CHECK(summary_of(mine)["scene"]["ensemble"]["seed"] == 7);
   }
 }
 

@@ -1,4 +1,5 @@
-// Reliability: what arnoldweb reads back (issue 27, items 1-5 and 11). Every
+// Reliability: what arnoldweb reads back (issue 27, items 1-5 and 11; issue
+// 37, item 1: HDF5 files that lead out of themselves). Every
 // file of an output directory has its size and XXH3-128 digest in
 // summary.json; render and compare read summary.json and map.h5 as plain files
 // without blocking, check the JSON's form, every file's digest and the shapes
@@ -11,8 +12,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 
+#include "arnoldweb/errors.hpp"
+#include "arnoldweb/output.hpp"
+#include "h5_test_file.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -282,5 +287,87 @@ TEST_SUITE("reliability") {
     CHECK(contains(out, "records no file digests"));
     CHECK_FALSE(summary_of(a).contains("file_digests"));  // render does not pretend it was checked
 #endif
+  }
+
+  TEST_CASE("12. a map.h5 whose data leads out of the file (to a FIFO) is refused before any read, in bounded time") {
+    const std::string dir = awtest::temp_dir("map-out");
+    const std::string a = saved_run(dir, "a", 1), b = saved_run(dir, "b", 2);
+    const std::string fifo = dir + "/fifo.h5";
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    const hsize_t npix = 12 * 8 * 8;
+    struct Case {
+      std::string name, says;
+      std::function<void(awtest::H5TestFile&)> write;
+    };
+    const std::vector<Case> cases = {
+        {"external-link", "/map is an external link to " + fifo + ":/map",
+         [&](awtest::H5TestFile& f) { f.external_link("map", fifo, "/map"); }},
+        {"external-storage", "/map stores its data in the external file " + fifo,
+         [&](awtest::H5TestFile& f) {
+           const hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+           REQUIRE(H5Pset_external(dcpl, fifo.c_str(), 0, npix * 8) >= 0);
+           f.dataset<std::uint64_t>("map", {}, {npix}, H5T_STD_U64LE, dcpl);
+           H5Pclose(dcpl);
+         }},
+        {"virtual", "/map is a virtual dataset",
+         [&](awtest::H5TestFile& f) { f.virtual_dataset("map", 4, fifo, true); }},
+        {"unwritten", "/map declares 768 values (6144 bytes) and stores 0 bytes",
+         [&](awtest::H5TestFile& f) { f.dataset<std::uint64_t>("map", {}, {npix}, H5T_STD_U64LE); }},
+    };
+    for (const Case& c : cases) {
+      CAPTURE(c.name);
+      // with a summary.json that records the crafted file's digest, and an older one without digests
+      for (const bool older : {false, true}) {
+        CAPTURE(older);
+        const std::string bad = copy_of(a, "bad");
+        fs::remove(bad + "/map.h5");
+        {
+          awtest::H5TestFile f(bad + "/map.h5");
+          c.write(f);
+        }
+        json j = summary_of(bad);
+        if (older) {
+          j.erase("file_digests");
+        } else {
+          const std::string bytes = slurp(bad + "/map.h5");
+          j["file_digests"]["map.h5"] = {{"bytes", bytes.size()}, {"xxh3_128", hex128(bytes)}};
+        }
+        write_summary(bad, j);
+        both_refuse(bad, b, bad + "/map.h5: " + c.says);  // blocked for ever on the FIFO before (or read fill values)
+      }
+    }
+  }
+
+  TEST_CASE("13. the HDF5 files that arnoldweb.load hands to h5py are checked by the same policy") {
+    const std::string dir = awtest::temp_dir("load-out");
+    const std::string scene = dir + "/scene.toml";
+    const std::string a = saved_run(dir, "a", 1);
+    std::string out;
+    REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu", "--out", dir + "/s", "--set",
+                             "observe.final_states=true"},
+                            &out) == 0);
+    const std::string good = arnoldweb::read_saved_hdf5_file(dir + "/s", "states.h5");
+    CHECK(good == slurp(dir + "/s/states.h5"));
+    // a states.h5 with an external link, its digest recorded (as a copied directory would have it)
+    const std::string fifo = dir + "/fifo.h5";
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    fs::remove(dir + "/s/states.h5");
+    {
+      awtest::H5TestFile f(dir + "/s/states.h5");
+      f.group("/final");
+      f.external_link("/final/momentum", fifo);
+    }
+    const std::string bytes = slurp(dir + "/s/states.h5");
+    json j = summary_of(dir + "/s");
+    j["file_digests"]["states.h5"] = {{"bytes", bytes.size()}, {"xxh3_128", hex128(bytes)}};
+    write_summary(dir + "/s", j);
+    CHECK(arnoldweb::read_saved_file(dir + "/s", "states.h5") == bytes);  // the bytes, checked by digest only
+    const std::string link = "states.h5: /final/momentum is an external link to " + fifo;
+    CHECK_THROWS_WITH_AS(arnoldweb::read_saved_hdf5_file(dir + "/s", "states.h5"), doctest::Contains(link.c_str()),
+                         arnoldweb::SavedRunError);
+    // and continue, which reads the same file as states
+    CHECK(run_within({"continue", dir + "/s", "--for", "1", "--quiet"}, 60, &out) == 2);
+    CAPTURE(out);
+    CHECK(contains(out, "/final/momentum: is an external link"));
   }
 }

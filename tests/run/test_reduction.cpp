@@ -152,6 +152,18 @@ TEST_SUITE("reduction") {
     CHECK_THROWS(Reduction::read(plan, image.substr(0, image.size() - 3)));
   }
 
+  TEST_CASE("a checkpoint's identity is the scene's values apart from the defaults") {
+    // a key that a later version adds, at its default, must not change the identity of a
+    // campaign's checkpoint: only values that differ from Scene{} enter it
+    using arnoldweb::detail::values_apart_from_defaults;
+    CHECK(values_apart_from_defaults(arnoldweb::Scene{}) == "");
+    const std::string text = values_apart_from_defaults(awtest::scene_from("[run]\nduration = 7.0\naverage = 7.0\n"));
+    CHECK(text == "[run] average = 7.0\n[run] duration = 7.0\n");
+    // what does not change results is not part of it
+    CHECK(values_apart_from_defaults(awtest::scene_from("[run]\ndevice = \"cpu\"\ncheckpoint_every = 60\n"
+                                                        "[output]\ndir = \"elsewhere\"\n")) == "");
+  }
+
   TEST_CASE("a checkpoint of another scene or version, or a damaged one, is a CheckpointError") {
     const arnoldweb::Job job = arnoldweb::plan_job(awtest::scene_from(kScene));
     const arnoldweb::Job other = arnoldweb::plan_job(awtest::scene_from(kScene, {"ensemble.seed=2"}));

@@ -112,8 +112,8 @@ struct Bad {
   std::vector<std::string> says;
 };
 
-// Every key set to a value other than its default, but the models' own
-// parameters: those follow from the model table (full_scene()).
+// Keys set to values other than their defaults (what "every key is read"
+// checks); full_scene() adds every other key of the table at its default.
 const char* kFullSceneFixed =
     "[model]\n"
     "energy = 400.5\n"
@@ -194,17 +194,27 @@ const char* kFullSceneFixed =
     "title = \"zoom (b)\"\n"
     "set = [\"ensemble.initial=cap\"]\n";
 
-// kFullSceneFixed with every model parameter key of the table written (at its
-// default, after [model]'s other keys): a new model's keys come in by themselves.
+// kFullSceneFixed with every other key of the key table written at its default, in
+// its table (a new key, a new model's parameters come in by themselves). A key
+// without a default must be in kFullSceneFixed, or the test of every key fails on it.
 std::string full_scene() {
-  std::string model_keys;
-  for (const auto& k : arnoldweb::scene_keys())
-    if (k.key.rfind("model.", 0) == 0 && k.key != "model.energy" && k.key != "model.kind" &&
-        k.key != "model.potential" && k.key != "model.parameters")
-      model_keys += k.key.substr(6) + " = " + k.default_value + "\n";
   std::string text = kFullSceneFixed;
-  const std::string after = "parameters = { eps = 0.5 }\n";
-  text.insert(text.find(after) + after.size(), model_keys);
+  const Scene fixed = parse(text);
+  for (const auto& k : arnoldweb::scene_keys()) {
+    if (fixed.where.count(k.key) || k.default_value == "(not set)") continue;
+    const std::size_t dot = k.key.rfind('.');
+    const std::string table = k.key.substr(0, dot), line = k.key.substr(dot + 1) + " = " + k.default_value;
+    const std::string header = "[" + table + "]\n";
+    const std::string parent = table.substr(table.rfind('.') + 1) + " = { ";  // an inline table
+    std::size_t at = text.find(header);
+    if (at != std::string::npos) {
+      text.insert(at + header.size(), line + "\n");
+    } else if (fixed.where.count(table) && (at = text.find(parent)) != std::string::npos) {
+      text.insert(at + parent.size(), line + ", ");
+    } else {
+      text += header + line + "\n";
+    }
+  }
   return text;
 }
 
@@ -455,6 +465,21 @@ TEST_SUITE("scene") {
         {"[run]\ndevice = \"opencl:\"\n", "run.device", 2, 10, {"got \"opencl:\""}},
         {"[run]\ndevice = \"cuda:-1\"\n", "run.device", 2, 10, {"got \"cuda:-1\""}},
         {"[run]\ndevice = 0\n", "run.device", 2, 10, {"got integer 0"}},
+        // issue 37: an index as `arnoldweb devices` writes it (opencl:00 passed the form and named no device)
+        {"[run]\ndevice = \"opencl:00\"\n", "run.device", 2, 10, {"got \"opencl:00\""}},
+        {"[run]\ndevice = \"cpu,cuda:01\"\n", "run.device", 2, 10, {"got \"cpu,cuda:01\""}},
+        // issue 37: directions normalised by their length, which must neither overflow nor underflow
+        {"[observe.diffusion]\nalong = [1e200, 1e200, 0]\n", "observe.diffusion.along", 2, 9,
+         {"largest absolute component from 1e-150 to 1e150", "got [1e+200, 1e+200, 0]", "cannot be computed"}},
+        {"[observe.diffusion]\nalong = [1e-170, 1e-170, 0]\n", "observe.diffusion.along", 2, 9,
+         {"from 1e-150 to 1e150", "got [1e-170, 1e-170, 0]"}},
+        {"[observe.diffusion]\nacross = [0, 0, 0]\n", "observe.diffusion.across", 2, 10,
+         {"from 1e-150 to 1e150", "the zero vector has no direction"}},
+        {"[observe.diffusion]\nacross = [1, nan, 0]\n", "observe.diffusion.across", 2, 10, {"got [1, nan, 0]"}},
+        {"[observe]\ntangent_initial = [0, 0, 0, 0, 0, 1e-200]\n", "observe.tangent_initial", 2, 19,
+         {"an array of 6 floats, largest absolute component from 1e-150 to 1e150"}},
+        {"[observe]\ntangent_initial = [1e151, 0, 0, 0, 0, 1]\n", "observe.tangent_initial", 2, 19,
+         {"cannot be computed"}},
         // [observe]
         {"[observe]\nvelocity_map = { nside = 63 }\n", "observe.velocity_map.nside", 2, 26,
          {"must be a power of two from 1 to 8192, got 63"}},
@@ -697,6 +722,29 @@ TEST_SUITE("scene") {
     CHECK(s.energy_every == 5.0);
     CHECK(s.pos("observe.energy_error").line == 2);
     CHECK(s.pos("observe.energy_error.every").set_index == 1);
+  }
+
+  TEST_CASE("issue 37: directions at the ends of the allowed range are read as written") {
+    const Scene s = awtest::scene_from("", {"observe.diffusion.along=[1e-150, 1e-151, 0]",
+                                            "observe.diffusion.across=[-1e150, 1e150, 1e150]",
+                                            "observe.tangent_initial=[0, 0, 0, 0, 0, -1e-150]"});
+    CHECK(s.diffusion_along == std::array<double, 3>{1e-150, 1e-151, 0});
+    CHECK(s.diffusion_across == std::array<double, 3>{-1e150, 1e150, 1e150});
+    CHECK(s.tangent_initial.back() == -1e-150);
+  }
+
+  TEST_CASE("issue 37: a label a user typed is echoed with its control characters escaped") {
+    std::string what;
+    try {
+      arnoldweb::parse_scene("", "<test>", {"run.device=cpu\nx\x1b[31m"}, {"--device cpu\nx\x1b[31m"});
+    } catch (const SceneError& e) {
+      CHECK(e.file() == "--device cpu\nx\x1b[31m");  // as given, for callers
+      what = e.what();
+    }
+    CHECK(what.rfind("--device cpu\\nx\\u001b[31m: run.device: must be ", 0) == 0);
+    CHECK(what.find('\n') == std::string::npos);
+    CHECK(what.find('\x1b') == std::string::npos);
+    CHECK(arnoldweb::printable("caf\xc3\xa9 \xff\xc2\x9b\t") == "caf\xc3\xa9 \\xff\\u009b\\t");
   }
 
   TEST_CASE("--set: bad overrides name the override") {

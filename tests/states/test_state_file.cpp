@@ -16,6 +16,7 @@
 
 #include "arnoldweb/arnoldweb.hpp"
 #include "aw_params.h"
+#include "h5_test_file.hpp"
 #include "support.hpp"
 
 using namespace arnoldweb;
@@ -28,58 +29,7 @@ const std::string kScene =
     "[run]\naverage = 1.0\nduration = 1.0\n[observe]\nvelocity_map = { nside = 8 }\nfinal_states = true\n"
     "[output]\nimages = false\n";
 
-// An HDF5 file written by a test: datasets of doubles or int64 and attributes.
-class TestFile {
- public:
-  explicit TestFile(const std::string& path) : path_(path) {
-    file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-    REQUIRE(file_ >= 0);
-  }
-  ~TestFile() { close(); }
-  void close() {
-    if (file_ >= 0) H5Fclose(file_);
-    file_ = -1;
-  }
-  void group(const std::string& name) { H5Gclose(H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)); }
-  template <class T>
-  void dataset(const std::string& name, const std::vector<T>& v, std::vector<hsize_t> dims, hid_t type) {
-    const hid_t space = H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr);
-    const hid_t d = H5Dcreate2(file_, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    REQUIRE(d >= 0);
-    const hid_t memory = std::is_same<T, double>::value ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT64;
-    if (!v.empty()) REQUIRE(H5Dwrite(d, memory, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) >= 0);
-    H5Dclose(d);
-    H5Sclose(space);
-  }
-  void reals(const std::string& name, const std::vector<double>& v, hid_t type = H5T_IEEE_F64LE) {
-    dataset(name, v, {v.size() / 3, 3}, type);
-  }
-  void ints(const std::string& name, const std::vector<std::int64_t>& v, bool rows_of_3 = true) {
-    dataset(name, v, rows_of_3 ? std::vector<hsize_t>{v.size() / 3, 3} : std::vector<hsize_t>{v.size()}, H5T_STD_I64LE);
-  }
-  void text(const std::string& object, const char* name, const std::string& value) {
-    const hid_t type = H5Tcopy(H5T_C_S1);
-    H5Tset_size(type, value.size());
-    const hid_t space = H5Screate(H5S_SCALAR);
-    const hid_t a = H5Acreate_by_name(file_, object.c_str(), name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    REQUIRE(H5Awrite(a, type, value.c_str()) >= 0);
-    H5Aclose(a);
-    H5Sclose(space);
-    H5Tclose(type);
-  }
-  void number(const std::string& object, const char* name, double value) {
-    const hid_t space = H5Screate(H5S_SCALAR);
-    const hid_t a = H5Acreate_by_name(file_, object.c_str(), name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT,
-                                      H5P_DEFAULT);
-    REQUIRE(H5Awrite(a, H5T_NATIVE_DOUBLE, &value) >= 0);
-    H5Aclose(a);
-    H5Sclose(space);
-  }
-
- private:
-  std::string path_;
-  hid_t file_ = -1;
-};
+using TestFile = awtest::H5TestFile;
 
 // The final states of a short run of kScene: valid states at E = 15 (their energy is E to the
 // run's energy error), as records and as a states.h5.
@@ -407,7 +357,7 @@ TEST_SUITE("states") {
         "is far from model.energy");
   }
 
-  TEST_CASE("scene keys: ensemble.file names an existing file, goes with ensemble.initial = \"file\", and is read when planned") {
+  TEST_CASE("scene keys: ensemble.file names an existing file, goes with ensemble.initial = \"file\", and is read before planning") {
     const std::string dir = awtest::temp_dir("states-keys");
     const std::string file = good_file(dir);
     const Scene ok = awtest::scene_from(kScene, {"ensemble.initial=file", awtest::set("ensemble.file", file)});
@@ -422,12 +372,14 @@ TEST_SUITE("states") {
                          doctest::Contains("\"file\" needs ensemble.file"), SceneError);
     CHECK_THROWS_WITH_AS(make_plan(awtest::scene_from(kScene, {awtest::set("ensemble.file", file)})),
                          doctest::Contains("is read only with ensemble.initial = \"file\""), SceneError);
-    // read and checked when planned: one trajectory per state
-    const Plan planned = make_plan(ok);
+    // read and checked before planning (read_plan_inputs), planned one trajectory per state
+    const auto plan_with_inputs = [](const Scene& scene) { return make_plan(scene, read_plan_inputs(scene)); };
+    CHECK_FALSE(make_plan(ok).states);  // planning itself reads no file
+    const Plan planned = plan_with_inputs(ok);
     REQUIRE(planned.states);
     CHECK(planned.states->count == 3000);
     CHECK(planned.scene.trajectories == 3000);
-    CHECK_THROWS_WITH_AS(make_plan(awtest::scene_from(kScene, {"ensemble.initial=file", awtest::set("ensemble.file", file),
+    CHECK_THROWS_WITH_AS(plan_with_inputs(awtest::scene_from(kScene, {"ensemble.initial=file", awtest::set("ensemble.file", file),
                                                                "ensemble.trajectories=12"})),
                          doctest::Contains("leave ensemble.trajectories out or set it to 3000"), SceneError);
     // `arnoldweb check` names a bad row, exit 2, and writes nothing

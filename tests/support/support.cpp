@@ -79,14 +79,16 @@ arnoldweb::Result run_on(const std::string& device, const arnoldweb::Plan& plan)
 
 std::string temp_dir(const std::string& tag) {
   namespace fs = std::filesystem;
-  static const fs::path root = [] {
+  // never destroyed: the atexit handler below, registered while root is initialised, runs after
+  // root's destructor would (valgrind: it read the freed path)
+  static const fs::path& root = *[] {
     std::string templ = (fs::temp_directory_path() / "arnoldweb-test-XXXXXX").string();
     if (!mkdtemp(templ.data())) std::abort();
     std::atexit([] {
       std::error_code ec;
       fs::remove_all(root, ec);
     });
-    return fs::path(templ);
+    return new fs::path(templ);
   }();
   static int counter = 0;
   fs::path p = root / (tag + "-" + std::to_string(counter++));

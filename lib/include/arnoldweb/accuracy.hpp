@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "arnoldweb/device.hpp"
+#include "arnoldweb/job.hpp"
 #include "arnoldweb/plan.hpp"
 
 namespace arnoldweb {
@@ -106,10 +107,11 @@ struct AccuracyReport {
   std::string why_not;  // when nothing meets the tolerance
 };
 
-// Run the pilot for `scene` on `backend` and find the cheapest method and
-// step with max|dE| <= tolerance. Throws SceneError for an invalid scene,
-// DeviceError for device problems.
-AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tolerance,
+// Run the pilot for `scene` (with its inputs, read_plan_inputs: a scene
+// that starts from states pilots the first of them) on `backend` and find the
+// cheapest method and step with max|dE| <= tolerance. Throws SceneError for an
+// invalid scene, DeviceError for device problems.
+AccuracyReport assess_accuracy(const Scene& scene, const PlanInputs& inputs, Backend& backend, double tolerance,
                                const PilotOptions& options = {});
 
 // The stage before planning for a scene with integrator.step = "auto": a pilot
@@ -120,6 +122,11 @@ AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tole
 // device computes the same bits, so the pilot may run on any of them (the
 // arnoldweb command uses the cpu backend). Throws SceneError when no method
 // meets the tolerance.
-Scene resolve_step(const Scene& scene, Backend& pilot, const PilotOptions& options = {});
+Scene resolve_step(const Scene& scene, const PlanInputs& inputs, Backend& pilot, const PilotOptions& options = {});
+
+// The resolver the arnoldweb command and Python plan jobs with (plan_job,
+// job.hpp): resolve_step with a pilot on the cpu backend (in portable math the
+// same bits as every device), opened only when a part asks for it.
+StepResolver cpu_pilot();
 
 }  // namespace arnoldweb

@@ -9,6 +9,11 @@
 
 namespace arnoldweb {
 
+// Text a user gave (a path, a --set or --device value), fit to be echoed in a
+// message: control characters written as escapes (\n, \t, \u001b), bytes
+// that are not UTF-8 as \xHH; everything else as it is.
+std::string printable(const std::string& text);
+
 // Base of all library errors. exit_code() is what the CLI returns for it.
 class Error : public std::runtime_error {
  public:

@@ -8,7 +8,6 @@
 #pragma once
 
 #include <functional>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,17 +27,24 @@ struct Job {
   const Plan& main() const { return parts.front().plan; }
 };
 
+// A part before it is planned: the scene it runs.
+struct PartScene {
+  std::string name, title, subdir;  // as JobPart's
+  Scene scene;
+};
+// The scene and each panel's (the scene's text read again with the panel's
+// overrides, then the scene's own overrides): what read_plan_inputs reads the
+// inputs of and plan_job plans. Throws SceneError for a bad panel.
+std::vector<PartScene> part_scenes(const Scene& scene);
+
 // What resolves integrator.step = "auto" in a scene before it is planned
 // (e.g. resolve_step with a pilot device, accuracy.hpp).
-using StepResolver = std::function<Scene(const Scene&)>;
+using StepResolver = std::function<Scene(const Scene&, const PlanInputs&)>;
 
-// Plans the scene and every panel (a panel is the scene's text read again with
-// the panel's overrides, then the scene's own overrides). A part whose step is
-// "auto" is resolved with `resolve` first (without one it is refused). Throws
-// SceneError.
-// Parts that start from given states (ensemble.initial = "file") read them
-// from ensemble.file, or take `states` (Python's initial=) when the scene names
-// no file; a part with neither is refused.
-Job plan_job(const Scene& scene, const StepResolver& resolve = {}, std::shared_ptr<const StateSet> states = nullptr);
+// Plans the scene and every panel with the inputs read before
+// (read_plan_inputs, inputs.hpp). A part whose step is "auto" is resolved with
+// `resolve` first (without one it is refused). Throws SceneError; a part with
+// ensemble.initial = "file" whose states are not among the inputs is refused.
+Job plan_job(const Scene& scene, const PlanInputs& inputs = {}, const StepResolver& resolve = {});
 
 }  // namespace arnoldweb

@@ -201,20 +201,43 @@ std::string read_saved_summary(const std::string& dir);
 // directory without digests: read unchecked). SavedRunError otherwise.
 std::string read_saved_file(const std::string& dir, const std::string& name);
 
-// What continuing the finished run in `dir` starts from (`arnoldweb continue`,
-// Python's continue_run): the run's scene as it ran (summary.json's
-// scene_toml) and the overrides, in order, that start its trajectories from
-// the final states, windings and time of its states.h5 (checked against the
-// size and digest summary.json records) and run them `duration` T more; a
-// caller's own overrides go after them. SavedRunError naming summary.json or
-// states.h5 for a directory that is not a finished run or kept no final states.
+// The same for an HDF5 file of the directory (states.h5, indicators.h5,
+// ...), whose bytes are then also checked by the HDF5 reader's policy
+// (docs/reliability.md, "Reading HDF5 files": nothing that leads out of the
+// file, every dataset's data in it), for readers such as h5py.
+std::string read_saved_hdf5_file(const std::string& dir, const std::string& name);
+
+// What continuing the finished run in `dir` adds to its scene
+// (`arnoldweb continue`, Python's continue_run).
+struct ContinueArgs {
+  double duration = 0;                    // T more (--for)
+  std::vector<std::string> sets;          // the caller's "key=value", keys of continue_keys() only
+  std::vector<std::string> set_labels;    // how each was given ("" : "--set <text>")
+  std::optional<std::string> out;         // output.dir
+  bool out_beside = false;                // without `out`: output.dir = DIR-to-<end time> (the CLI)
+  std::optional<std::string> device;      // run.device
+};
+// The keys a continuation may set (with everything under each): those that
+// leave the trajectories as the run would have made them (docs/cluster.md,
+// "Continuing a finished run").
+const std::vector<std::string>& continue_keys();
+
+// The run's scene as it ran (summary.json's scene_toml) and the overrides, in
+// order, that start its trajectories from the final states, windings and time
+// of its states.h5 and run them `args.duration` T more, then the caller's. Each
+// value is passed as a TOML value of its own (a directory named '"q" #' is
+// that directory), never spliced into TOML text. states.h5 is checked against
+// the size and digest summary.json records when it is read (read_state_file).
+// SavedRunError naming summary.json or states.h5 for a directory that is not
+// a finished run or kept no final states; SceneError for a set of a key that
+// changes the trajectories, or of run.duration (that is `duration`).
 struct Continuation {
   std::string scene_toml;
   std::string source;     // <dir>/summary.json, the scene's name in messages
   double end_time = 0;    // when the run ended, in T
   std::vector<std::string> overrides, labels;  // labels: how each override was given
 };
-Continuation continuation_of(const std::string& dir, double duration);
+Continuation continuation_of(const std::string& dir, const ContinueArgs& args);
 
 // Draws the pictures of an output directory written earlier (from its
 // summary.json and map.h5; e.g. a GPU node's run, on a machine with cairo),

@@ -3,7 +3,9 @@
 // Data flows one way: Scene -> Plan -> backend -> Result -> writers.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -15,7 +17,7 @@
 
 namespace arnoldweb {
 
-struct DeviceInfo;  // arnoldweb/device.hpp
+struct DeviceInfo;  // arnoldweb/device_info.hpp
 
 namespace detail {
 struct KernelParams;
@@ -106,8 +108,8 @@ struct Plan {
   std::shared_ptr<const detail::KernelParams> params;
 
   // The states the trajectories start from when ensemble.initial = "file"
-  // (one per trajectory; set by plan_job from ensemble.file, or by the caller:
-  // Python's initial=). Read-only, shared by the copies of the plan.
+  // (one per trajectory: PlanInputs::states_for). Read-only, shared by the
+  // copies of the plan.
   std::shared_ptr<const StateSet> states;
 
   std::vector<std::string> effects() const { return feature_names(kernel.features); }
@@ -116,12 +118,32 @@ struct Plan {
   double start_time() const { return states && states->has_time ? states->time : 0.0; }
 };
 
+// What planning takes from outside the scene, read before it by the stage that
+// fills it (read_plan_inputs, inputs.hpp: the arnoldweb command, Python, and
+// later serve) or given by a caller (tests; Python's initial=). Planning
+// itself reads no file, opens no device and loads no plugin: these are values.
+struct PlanInputs {
+  // ensemble.initial = "file": the states of each ensemble.file, read and
+  // checked against the scene that names it, by path;
+  std::map<std::string, std::shared_ptr<const StateSet>> state_files;
+  // and those a scene that names no file starts from (Python's initial=).
+  std::shared_ptr<const StateSet> given_states;
+  // Why the pictures plugin cannot draw ("" where it can, or where no scene asks for pictures).
+  std::string no_pictures;
+
+  // The states `scene` starts from: its ensemble.file's, else the given ones; null: none.
+  std::shared_ptr<const StateSet> states_for(const Scene& scene) const;
+};
+
 // Validate the scene as a whole and build the plan: a pure function of the
-// scene (it opens no device and runs nothing). Throws SceneError for values
-// that are wrong together (average not a multiple of the step, ...), naming
-// the key and where its value came from. integrator.step = "auto" must be
-// resolved first (resolve_step, accuracy.hpp).
-Plan make_plan(const Scene& scene);
+// scene and its inputs (it reads no file, opens no device and runs nothing).
+// Throws SceneError for values that are wrong together (average not a
+// multiple of the step, ...), naming the key and where its value came from.
+// integrator.step = "auto" must be resolved first (resolve_step,
+// accuracy.hpp). A scene with ensemble.initial = "file" whose states are not
+// among the inputs is planned without them (Plan::states, set later; running
+// it is refused until they are).
+Plan make_plan(const Scene& scene, const PlanInputs& inputs = {});
 
 // The plan with another step, or another number of trajectories, and all else
 // as planned: the schedule, the method's coefficients and the step-size guard
@@ -130,6 +152,12 @@ Plan make_plan(const Scene& scene);
 // allowed).
 Plan with_step(const Plan& plan, double step);
 Plan with_trajectories(const Plan& plan, std::uint64_t trajectories);
+
+// The resonances the maps of this plan are drawn with (map_resonances.png, the
+// explorer): the wave vectors k of the model's harmonics, whose circles k.V = 0
+// are drawn; empty when the model's harmonics make the whole web (the paper's
+// model), whose maps are drawn with every circle m.P = 0 of low order.
+std::vector<std::array<int, 3>> model_resonances(const Plan& plan);
 
 // What a plan needs in memory (estimates from the plan alone, upper bounds).
 struct MemoryEstimate {
@@ -148,7 +176,6 @@ std::uint64_t largest_chunk(const Plan& plan);
 // a launch fills it; a CPU device keeps largest_chunk(plan).
 std::uint64_t largest_chunk(const Plan& plan, const DeviceInfo& device);
 
-struct DeviceInfo;
 // Refuses, before anything is computed, a plan that does not fit the device
 // (its memory and largest buffer) or this process (host_available bytes; 0:
 // unknown): SceneError naming the key to change, with the numbers.

@@ -193,11 +193,20 @@ Scene parse_scene(const std::string& text, const std::string& file,
                   const std::vector<std::string>& overrides = {},
                   const std::vector<std::string>& labels = {});
 
+// The override that gives the string key `key` the text `value` as it is:
+// written as a TOML string of its own, never read as TOML, so that `--out
+// '"q" #'` is the directory named that and not q (--out, --device, what
+// `continue` and `resume` add, a panel's directory). SceneError naming `label`
+// (how the value was given, e.g. "--out <value>") for a value that is not
+// UTF-8, which no scene (TOML text) can hold.
+std::string string_override(const std::string& key, const std::string& value, const std::string& label);
+
 // run.device (docs/cluster.md): "auto", "all", one device id or a list of ids
 // separated by commas ("cuda:0,cuda:1"). The entries of a value as written: a
 // list's ids in order, any other value on its own.
 std::vector<std::string> device_entries(const std::string& device);
-// Whether `id` is one device id: "cpu", "opencl:N" or "cuda:N".
+// Whether `id` is one device id: "cpu", "opencl:N" or "cuda:N" (N in decimal
+// without a leading zero, as `arnoldweb devices` lists it).
 bool is_device_id(const std::string& id);
 // The first id that a list names twice, or "".
 std::string repeated_device(const std::string& device);

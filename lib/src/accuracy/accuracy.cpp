@@ -62,6 +62,9 @@ double advised_step(double omega) {
   return g.advised / g.value;
 }
 
+// The pilot's scene of a method at a step: the scene's first n trajectories
+// over `duration`, |dE| every `every`, and nothing else observed (no map,
+// states, indicators or analyses: the energy error is all it measures).
 Scene pilot_scene(const Scene& s, const std::string& method, double step, std::uint64_t n,
                   double duration, double every) {
   Scene p = s;
@@ -82,7 +85,27 @@ Scene pilot_scene(const Scene& s, const std::string& method, double step, std::u
   p.zoom = false;
   p.confine = false;
   p.frame_times.clear();
+  p.fli = p.megno = p.lyapunov = false;
+  p.frequencies = false;
+  p.diffusion = false;
+  p.slice = 0;
   p.panels.clear();
+  return p;
+}
+
+// The pilot's inputs: the scene's, with only the first n of its given states.
+PlanInputs pilot_inputs(const Scene& s, const PlanInputs& in, std::uint64_t n) {
+  PlanInputs p = in;
+  const std::shared_ptr<const StateSet> all = in.states_for(s);
+  if (s.initial != "file" || !all || all->count <= n) return p;
+  auto first = std::make_shared<StateSet>(*all);
+  first->count = n;
+  for (auto* v : {&first->position_turns, &first->momentum}) v->resize(3 * n);
+  first->winding.resize(3 * n);
+  first->status.resize(n);
+  if (!first->energy.empty()) first->energy.resize(n);
+  if (s.initial_file.empty()) p.given_states = first;
+  else p.state_files[s.initial_file] = first;
   return p;
 }
 
@@ -175,8 +198,10 @@ void add_check(MethodFit& f, const PilotPoint& p) {
 
 class Pilot {
  public:
-  Pilot(const Scene& scene, Backend& backend, std::uint64_t n, double duration, double every)
-      : scene_(scene), backend_(backend), n_(n), duration_(duration), every_(every) {}
+  Pilot(const Scene& scene, const PlanInputs& inputs, Backend& backend, std::uint64_t n, double duration,
+        double every)
+      : scene_(scene), inputs_(pilot_inputs(scene, inputs, n)), backend_(backend), n_(n), duration_(duration),
+        every_(every) {}
 
   PilotPoint measure(const std::string& method, double step) {
     const Result r = run(plan_at(method, step), backend_);
@@ -207,11 +232,13 @@ class Pilot {
   Plan plan_at(const std::string& method, double step) {
     auto it = planned_.find(method);
     if (it == planned_.end())
-      it = planned_.emplace(method, make_plan(pilot_scene(scene_, method, step, n_, duration_, every_))).first;
+      it = planned_.emplace(method, make_plan(pilot_scene(scene_, method, step, n_, duration_, every_), inputs_))
+               .first;
     return with_step(it->second, step);
   }
 
   const Scene& scene_;
+  const PlanInputs inputs_;
   Backend& backend_;
   std::uint64_t n_;
   double duration_, every_;
@@ -275,7 +302,7 @@ double MethodFit::predict_median(double step) const {
   return predict(merged(*this), &PilotPoint::median, order, step);
 }
 
-AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tolerance,
+AccuracyReport assess_accuracy(const Scene& scene, const PlanInputs& inputs, Backend& backend, double tolerance,
                                const PilotOptions& o) {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
@@ -293,7 +320,7 @@ AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tole
     written.step_auto = false;
     written.step = unit / std::ceil(unit / 0.01 - 1e-9);
   }
-  const Plan wp = make_plan(written);
+  const Plan wp = make_plan(written, inputs);
   rep.scene_trajectory_steps = wp.trajectory_steps;
   rep.scene_force_evaluations = wp.force_evaluations;
 
@@ -318,14 +345,15 @@ AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tole
   const double every = unit / static_cast<double>(parts);
   const double horizon = std::min(o.duration, scene.duration);
   const double duration = every * std::max(1.0, std::round(horizon / every));
-  const std::uint64_t n = std::max<std::uint64_t>(1, std::min(o.trajectories, scene.trajectories));
+  const std::uint64_t total = wp.scene.trajectories;  // as planned: a state file's count, a grid's points
+  const std::uint64_t n = std::max<std::uint64_t>(1, std::min(o.trajectories, total));
   rep.pilot_trajectories = n;
   rep.pilot_duration = duration;
   rep.pilot_every = every;
-  Pilot pilot(scene, backend, n, duration, every);
+  Pilot pilot(scene, inputs, backend, n, duration, every);
 
   // ---- the methods: steps h0, h0/2, h0/4 below the guard's advice
-  const double omega = largest_frequency(scene);
+  const double omega = wp.guard.omega;
   const double h_adv = advised_step(omega);
   const std::int64_t n0 = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(every / h_adv - 1e-9)));
   const double largest = every / static_cast<double>(n0);
@@ -384,9 +412,10 @@ AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tole
     a.meets = p.max <= target;
     if (!a.meets) a.note = "pilot max " + fmt(p.max) + " > " + fmt(target);
     rep.as_written_measured = true;
-    const std::uint64_t nt = std::min<std::uint64_t>(scene.trajectories,
-                                                     std::max<std::uint64_t>(n, backend.preferred_chunk()));
-    rep.rate = pilot.rate(m.name, scene.step, nt, scene.trajectories);
+    // given states: the rate on the pilot's own (it carries no more)
+    const std::uint64_t most = scene.initial == "file" ? n : total;
+    const std::uint64_t nt = std::min<std::uint64_t>(most, std::max<std::uint64_t>(n, backend.preferred_chunk()));
+    rep.rate = pilot.rate(m.name, scene.step, nt, most);
     rep.scene_seconds = rep.rate > 0 ? rep.scene_trajectory_steps / rep.rate : 0;
   }
 
@@ -444,12 +473,12 @@ AccuracyReport assess_accuracy(const Scene& scene, Backend& backend, double tole
   return rep;
 }
 
-Scene resolve_step(const Scene& scene, Backend& pilot, const PilotOptions& options) {
+Scene resolve_step(const Scene& scene, const PlanInputs& inputs, Backend& pilot, const PilotOptions& options) {
   if (!scene.step_auto) return scene;
   PilotOptions o = options;
   const bool method_written = written(scene, "integrator.method");
   if (method_written) o.methods = {scene.method};
-  const AccuracyReport rep = assess_accuracy(scene, pilot, scene.tolerance, o);
+  const AccuracyReport rep = assess_accuracy(scene, inputs, pilot, scene.tolerance, o);
   if (!rep.found)
     fail(scene, "integrator.tolerance",
          "integrator.step = \"auto\": " + rep.why_not +
@@ -473,6 +502,14 @@ Scene resolve_step(const Scene& scene, Backend& pilot, const PilotOptions& optio
   a.pilot_device = rep.device;
   a.pilot_seconds = rep.pilot_seconds;
   return resolved;
+}
+
+StepResolver cpu_pilot() {
+  auto pilot = std::make_shared<std::unique_ptr<Backend>>();
+  return [pilot](const Scene& s, const PlanInputs& inputs) {
+    if (!*pilot) *pilot = open_backend("cpu");
+    return resolve_step(s, inputs, **pilot);
+  };
 }
 
 }  // namespace arnoldweb

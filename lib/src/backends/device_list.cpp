@@ -26,21 +26,22 @@ std::vector<std::string> every_gpu() {
 }  // namespace
 
 std::vector<std::string> device_ids(const std::string& device) {
-  std::string spec = device, from = "run.device";
+  // where the value came from, for messages: the scene's run.device, or the environment
+  std::string spec = device, source, from = "run.device";
   if (spec.empty() || spec == "auto") {
     const char* env = std::getenv("ARNOLDWEB_DEVICE");
     spec = (env && *env && std::string(env) != "auto") ? env : default_device_id();
-    if (env && *env) from = "ARNOLDWEB_DEVICE";
+    if (env && *env) source = "environment", from = "ARNOLDWEB_DEVICE";
   }
   if (spec == "all") return every_gpu();
   const std::vector<std::string> ids = device_entries(spec);
   for (const std::string& id : ids)
     if (!is_device_id(id))
-      throw SceneError("", 0, 0, from,
-                       "\"" + spec + "\" is not a device: give \"auto\", \"all\", \"cpu\", \"opencl:N\", \"cuda:N\" "
+      throw SceneError(source, 0, 0, from,
+                       "\"" + printable(spec) + "\" is not a device: give \"auto\", \"all\", \"cpu\", \"opencl:N\", \"cuda:N\" "
                        "or a list of ids such as \"cuda:0,cuda:1\" (`arnoldweb devices` lists them)");
   if (const std::string twice = repeated_device(spec); !twice.empty())
-    throw SceneError("", 0, 0, from, "\"" + spec + "\" lists " + twice + " twice; a list names each device once");
+    throw SceneError(source, 0, 0, from, "\"" + printable(spec) + "\" lists " + printable(twice) + " twice; a list names each device once");
   for (const std::string& id : ids) find_device(id);  // DeviceError for a device this machine lacks
   return ids;
 }

@@ -9,6 +9,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <utility>
 
 namespace arnoldweb::detail {
 namespace {
@@ -73,9 +74,26 @@ RegularFile open_plain(const std::string& path, Fd& f) {
 
 }  // namespace
 
-std::string plain_file_problem(const std::string& path) {
+OpenPlainFile::OpenPlainFile(const std::string& path) : path_(path) {
   Fd f{-1};
-  return open_plain(path, f).why;
+  const RegularFile r = open_plain(path, f);
+  why_ = r.why;
+  error_ = r.error;
+  size_ = r.size;
+  if (why_.empty()) std::swap(fd_, f.fd);
+}
+
+OpenPlainFile::~OpenPlainFile() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+std::string OpenPlainFile::name() const {
+  const std::string self = "/proc/self/fd/" + std::to_string(fd_);
+  struct stat a {}, b {};
+  // the same file through /proc (mounted nearly everywhere), else its path
+  if (fd_ >= 0 && ::fstat(fd_, &a) == 0 && ::stat(self.c_str(), &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino)
+    return self;
+  return path_;
 }
 
 RegularFile read_regular_file(const std::string& path, std::uint64_t max_bytes) {

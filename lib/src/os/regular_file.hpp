@@ -22,8 +22,27 @@ struct RegularFile {
 // Reads `path` if it is a regular file of at most max_bytes.
 RegularFile read_regular_file(const std::string& path, std::uint64_t max_bytes);
 
-// Why `path` is not a plain file that another reader (HDF5) may open, or ""
-// when it is one: the same checks, without reading it.
-std::string plain_file_problem(const std::string& path);
+// A plain file held open for a reader that opens it again by name (HDF5):
+// the checks of read_regular_file, without reading it. name() reaches this
+// very file (/proc/self/fd/N) even if its path is replaced by a FIFO after
+// the checks.
+class OpenPlainFile {
+ public:
+  explicit OpenPlainFile(const std::string& path);
+  ~OpenPlainFile();
+  OpenPlainFile(const OpenPlainFile&) = delete;
+  OpenPlainFile& operator=(const OpenPlainFile&) = delete;
+
+  const std::string& why() const { return why_; }  // "" when it is a plain file
+  int error() const { return error_; }              // errno of a failed open (ENOENT: missing)
+  std::uint64_t size() const { return size_; }
+  int fd() const { return fd_; }
+  std::string name() const;
+
+ private:
+  std::string path_, why_;
+  int fd_ = -1, error_ = 0;
+  std::uint64_t size_ = 0;
+};
 
 }  // namespace arnoldweb::detail

@@ -16,6 +16,9 @@
 namespace arnoldweb::detail {
 
 FileDigest digest_bytes(const std::string& bytes);
+// The digest of an open file's contents, read in pieces (a file of gigabytes
+// is not held in memory); OutputError naming `path` if it cannot be read.
+FileDigest digest_file(int fd, const std::string& path);
 
 // summary.json's "file_digests": {"map.h5": {"bytes": 12345, "xxh3_128": "..."}, ...},
 // and one entry of it.

@@ -15,12 +15,12 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <regex>
-#include <set>
+#include <map>
 
 #include "arnoldweb/errors.hpp"
 #include "os/regular_file.hpp"
 #include "output/atomic_file.hpp"
+#include "output/file_digest.hpp"
 
 namespace arnoldweb {
 namespace fs = std::filesystem;
@@ -51,72 +51,71 @@ bool contains_path(const fs::path& a, const fs::path& b) {
   return true;
 }
 
-// The names arnoldweb wrote before summary.json listed them (0.1.0).
-bool legacy_name(const std::string& rel) {
-  static const std::regex known(
-      R"(((panel-[A-Za-z0-9_-]+/)?(summary\.json|map\.h5|states\.h5|map\.png|map_mollweide\.png|)"
-      R"(map_resonances\.png|zoom\.png|frames_spread\.csv|frames\.mp4|frames/frame_[0-9]+\.png))|figure\.png)");
-  return std::regex_match(rel, known);
-}
-
-bool legacy_dir(const std::string& rel) {
-  static const std::regex known(R"((panel-[A-Za-z0-9_-]+)(/frames)?|frames)");
-  return std::regex_match(rel, known);
-}
-
+// What summary.json says arnoldweb wrote into its directory: the files whose
+// sizes and digests it records ("file_digests"). A file is arnoldweb's only
+// while it still has them (a user's file listed in a copied summary.json, or
+// an output edited since, is not); summary.json itself is the manifest.
 struct Manifest {
-  bool ours = false;            // a summary.json with arnoldweb's signature
-  bool listed = false;          // it has a "files" list
-  std::set<std::string> files;  // relative paths, summary.json included
+  bool ours = false;                          // a summary.json with arnoldweb's signature
+  std::map<std::string, FileDigest> digests;  // relative path -> as written
   std::string problem;
 };
 
 Manifest read_manifest(const fs::path& dir) {
   Manifest m;
   const fs::path summary = dir / "summary.json";
-  std::error_code ec;
   struct stat st {};
   if (::lstat(summary.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {
     m.problem = "it holds no summary.json written by arnoldweb";
     return m;
   }
-  if (static_cast<std::uintmax_t>(st.st_size) > kMaxSummaryBytes) {
-    m.problem = "its summary.json is not one arnoldweb wrote (too large)";
+  const RegularFile f = read_regular_file(summary.string(), kMaxSummaryBytes);
+  if (!f.why.empty()) {
+    m.problem = "its summary.json cannot be read (" + f.why + ")";
     return m;
   }
-  try {
-    const RegularFile f = read_regular_file(summary.string(), kMaxSummaryBytes);
-    if (!f.why.empty()) {
-      m.problem = "its summary.json cannot be read (" + f.why + ")";
-      return m;
-    }
-    const nlohmann::json j = nlohmann::json::parse(f.bytes);
-    if (!j.is_object() || !j.contains("arnoldweb") || !j["arnoldweb"].is_string()) {
-      m.problem = "its summary.json was not written by arnoldweb";
-      return m;
-    }
-    m.ours = true;
-    m.files.insert("summary.json");
-    if (j.contains("files") && j["files"].is_array()) {
-      m.listed = true;
-      for (const auto& f : j["files"])
-        if (f.is_string()) m.files.insert(f.get<std::string>());
-    }
-  } catch (const std::exception&) {
-    m.problem = "its summary.json is not valid JSON written by arnoldweb";
+  const nlohmann::json j = nlohmann::json::parse(f.bytes, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("arnoldweb") || !j["arnoldweb"].is_string()) {
+    m.problem = "its summary.json was not written by arnoldweb";
+    return m;
   }
+  const auto digests = j.find("file_digests");
+  if (digests == j.end() || !digests->is_object()) {
+    m.problem = "its summary.json records no file digests (an arnoldweb before 2026-11-26 wrote it), and --force "
+                "deletes only files whose digests summary.json records; remove it yourself, or choose another --out";
+    return m;
+  }
+  for (const auto& [name, d] : digests->items()) {
+    const auto bytes = d.is_object() ? d.find("bytes") : d.end();
+    const auto hex = d.is_object() ? d.find("xxh3_128") : d.end();
+    if (bytes == d.end() || !bytes->is_number_unsigned() || hex == d.end() || !hex->is_string()) {
+      m.problem = "its summary.json records file_digests." + name + " in a form arnoldweb does not write";
+      return m;
+    }
+    m.digests[name] = {bytes->get<std::uint64_t>(), hex->get<std::string>()};
+  }
+  m.ours = true;
   return m;
 }
 
-bool listed_file(const Manifest& m, const std::string& rel) {
-  return m.listed ? m.files.count(rel) > 0 : legacy_name(rel);
+// Whether the file `rel` of `dir` is one arnoldweb wrote and nobody changed.
+bool written_by_run(const Manifest& m, const fs::path& dir, const std::string& rel) {
+  if (rel == "summary.json") return true;
+  const auto it = m.digests.find(rel);
+  if (it == m.digests.end()) return false;
+  const OpenPlainFile f((dir / rel).string());
+  if (!f.why().empty() || f.size() != it->second.bytes) return false;
+  try {
+    return digest_file(f.fd(), (dir / rel).string()).xxh3_128 == it->second.xxh3_128;
+  } catch (const OutputError&) {
+    return false;  // unreadable: not known to be ours
+  }
 }
 
 bool listed_dir(const Manifest& m, const std::string& rel) {
-  if (!m.listed) return legacy_dir(rel);
   const std::string prefix = rel + "/";
-  for (const std::string& f : m.files)
-    if (f.compare(0, prefix.size(), prefix) == 0) return true;
+  for (const auto& [name, d] : m.digests)
+    if (name.compare(0, prefix.size(), prefix) == 0) return true;
   return false;
 }
 
@@ -134,10 +133,14 @@ std::vector<std::string> unknown_entries(const fs::path& dir, const Manifest& m,
     const std::string rel = it->path().lexically_relative(dir).string();
     const fs::file_status s = it->symlink_status(ec);
     bool ok = false;
-    if (fs::is_regular_file(s)) ok = listed_file(m, rel);
+    if (fs::is_regular_file(s)) ok = written_by_run(m, dir, rel);
     else if (fs::is_directory(s)) ok = listed_dir(m, rel);
     if (!ok) {
-      unknown.push_back(rel + (fs::is_symlink(s) ? " (a symbolic link)" : fs::is_directory(s) ? "/" : ""));
+      const bool changed = fs::is_regular_file(s) && m.digests.count(rel);
+      unknown.push_back(rel + (fs::is_symlink(s)     ? " (a symbolic link)"
+                               : fs::is_directory(s) ? "/"
+                               : changed             ? " (changed since the run wrote it)"
+                                                     : ""));
       if (fs::is_directory(s)) it.disable_recursion_pending();
       if (unknown.size() >= limit) break;
     }
@@ -158,7 +161,7 @@ bool remove_written(const fs::path& dir) {
        it.increment(ec)) {
     const std::string rel = it->path().lexically_relative(dir).string();
     const fs::file_status s = it->symlink_status(ec);
-    if (fs::is_regular_file(s) && listed_file(m, rel)) files.push_back(it->path());
+    if (fs::is_regular_file(s) && written_by_run(m, dir, rel)) files.push_back(it->path());
     else if (fs::is_directory(s)) dirs.push_back(it->path());
   }
   // summary.json last: while anything else is left, the directory stays recognisably ours
@@ -309,7 +312,10 @@ std::string why_not_replaceable(const std::string& dir, const std::string& scene
     if (contains_path(target, scene_dir)) return "it holds the scene file " + scene_file;
   }
   const Manifest m = read_manifest(p);
-  if (!m.ours) return m.problem + "; --force only replaces a directory that a run of arnoldweb wrote";
+  if (!m.ours)
+    return m.problem + (m.problem.find("--force") == std::string::npos
+                            ? "; --force only replaces a directory that a run of arnoldweb wrote"
+                            : "");
   const auto unknown = unknown_entries(p, m, 4);
   if (!unknown.empty()) {
     std::string list;
@@ -317,11 +323,6 @@ std::string why_not_replaceable(const std::string& dir, const std::string& scene
     return "it holds files that arnoldweb did not write (" + list + "); move them away or choose another --out";
   }
   return "";
-}
-
-std::vector<std::string> written_files(const std::string& dir) {
-  const Manifest m = read_manifest(dir);
-  return std::vector<std::string>(m.files.begin(), m.files.end());
 }
 
 Staging::Staging(const std::string& final_dir, const OutputOptions& options) : options_(options) {

@@ -7,8 +7,11 @@
 //    arnoldweb's, and moved into place at the end: a directory is either
 //    absent or complete;
 //  - an existing directory is replaced only with --force, and only if a run of
-//    arnoldweb wrote it: its summary.json lists every file in it ("files") and
-//    nothing else is inside; then only the listed files are deleted. The
+//    arnoldweb wrote it: its summary.json records the size and digest of every
+//    other file in it ("file_digests"), each file still has them, and nothing
+//    else is inside; then only those files are deleted (a directory whose
+//    summary.json records no digests, written before 2026-11-26, is refused:
+//    nothing tells its files from a user's). The
 //    current directory, its parents, the scene file's directory and its
 //    parents, / and $HOME are never replaced;
 //  - staging directories left by processes that died are removed on the next
@@ -35,11 +38,6 @@ std::string normalise_output_dir(const std::string& dir);
 // Why `dir` may not be replaced by a run's outputs, or "" if it may (it was
 // written by arnoldweb and holds nothing else). Looks, changes nothing.
 std::string why_not_replaceable(const std::string& dir, const std::string& scene_file);
-
-// The files under `dir` that arnoldweb wrote, relative to it (from the
-// summary.json manifest, or, for directories written before manifests, the
-// names arnoldweb writes).
-std::vector<std::string> written_files(const std::string& dir);
 
 // The staging directories beside `final_dir` (<name>.partial-PID, PID in
 // decimal), whatever their state, with the process id in their name.

@@ -8,8 +8,6 @@
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/version.hpp"
 #include "os/process.hpp"
-#include "physics/model_descriptor.hpp"
-#include "plan/plan_params.hpp"
 #include "output/atomic_file.hpp"
 #include "output/picture_plugin.hpp"
 
@@ -59,8 +57,7 @@ RenderOptions picture_options(const Plan& plan, const Result& r) {
   o.title = title_of(plan, r);
   o.caption = caption_of(r);
   // the circles of the model's own harmonics, or every resonance up to an order (the paper's)
-  if (plan.model && !plan.model->overlay_all_resonances && plan.params)
-    o.resonances = plan.model->wave_vectors(detail::params(plan).reals);
+  o.resonances = model_resonances(plan);
   double lon, lat;
   if (initial_centre(plan.scene, &lon, &lat)) {
     o.view_lon = lon;

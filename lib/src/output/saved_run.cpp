@@ -7,7 +7,6 @@
 
 #include <cerrno>
 #include <filesystem>
-#include <sstream>
 
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/output.hpp"
@@ -15,13 +14,15 @@
 #include "aw_params.h"
 #include "os/regular_file.hpp"
 #include "output/file_digest.hpp"
-#include "output/hdf5_handle.hpp"
+#include "output/h5_reader.hpp"
 
 namespace arnoldweb {
 namespace {
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
+using detail::H5Fail;
+using detail::H5File;
 
 constexpr std::uint64_t kMaxSummaryBytes = 64u << 20;  // as output_dir.cpp: far above any summary.json
 constexpr std::uint64_t kMaxNside = 8192;
@@ -57,32 +58,14 @@ bool hex_digest(const json& v) {
   return s.size() == 32 && s.find_first_not_of("0123456789abcdef") == std::string::npos;
 }
 
-// map.h5's bytes opened as an HDF5 file in memory (the core driver): the
-// bytes that were checked are the bytes that are read.
-hid_t open_image(std::string& bytes, const std::string& path) {
-  const H5Handle fapl{H5Pcreate(H5P_FILE_ACCESS), H5Pclose};
-  if (fapl.id < 0 || H5Pset_fapl_core(fapl.id, 1 << 20, 0) < 0 ||
-      H5Pset_file_image(fapl.id, bytes.data(), bytes.size()) < 0)
-    throw SavedRunError(path, "HDF5 could not take the file's bytes");
-  // The core driver refuses an image whose name it can open on disk (and an
-  // open could block on a FIFO): with a slash after the name of a file, the
-  // open fails at once (ENOTDIR).
-  const hid_t f = H5Fopen((path + "/").c_str(), H5F_ACC_RDONLY, fapl.id);
-  if (f < 0) throw SavedRunError(path, "cannot open it (not an HDF5 file?)");
-  return f;
-}
-
 // The dimensions of a dataset, or an empty vector when the file has none by
 // that name.
-std::vector<hsize_t> dims_of(hid_t file, const char* name, const std::string& path) {
-  if (H5Lexists(file, name, H5P_DEFAULT) <= 0) return {};
-  const H5Handle d{H5Dopen2(file, name, H5P_DEFAULT), H5Dclose};
-  if (d.id < 0) throw SavedRunError(path, std::string("cannot open the dataset ") + name);
-  const H5Handle space{H5Dget_space(d.id), H5Sclose};
-  const int rank = space.id < 0 ? -1 : H5Sget_simple_extent_ndims(space.id);
-  if (rank < 1 || rank > 2) throw SavedRunError(path, std::string("the dataset ") + name + " is not a list or a table");
-  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
-  H5Sget_simple_extent_dims(space.id, dims.data(), nullptr);
+std::vector<hsize_t> dims_of(const H5File& file, const char* name, const std::string& path) {
+  const std::string at = std::string("/") + name;
+  if (!file.has(at)) return {};
+  const H5Handle d = file.dataset(at);
+  std::vector<hsize_t> dims = file.dims(d.id, at);
+  if (dims.size() < 1 || dims.size() > 2) throw SavedRunError(path, std::string("the dataset ") + name + " is not a list or a table");
   return dims;
 }
 
@@ -102,8 +85,9 @@ std::string shape(const std::vector<hsize_t>& dims) {
 }
 
 // The dataset `name` as unsigned 64-bit counts; its dimensions must be `want`
-// (checked before anything is allocated or read).
-std::vector<std::uint64_t> read_counts(hid_t file, const char* name, const std::vector<hsize_t>& want,
+// (checked before anything is allocated or read; the reader checked that its
+// data is in the file).
+std::vector<std::uint64_t> read_counts(const H5File& file, const char* name, const std::vector<hsize_t>& want,
                                        const std::string& path, const std::string& declared) {
   const std::vector<hsize_t> dims = dims_of(file, name, path);
   if (dims != want)
@@ -113,17 +97,17 @@ std::vector<std::uint64_t> read_counts(hid_t file, const char* name, const std::
   for (hsize_t d : dims) n *= static_cast<std::size_t>(d);
   std::vector<std::uint64_t> v(dims.empty() ? 0 : n);
   if (v.empty()) return v;
-  const H5Handle d{H5Dopen2(file, name, H5P_DEFAULT), H5Dclose};
-  if (d.id >= 0) require_integer_type(H5Dget_type(d.id), path, std::string("the dataset ") + name);
-  if (d.id < 0 || H5Dread(d.id, H5T_NATIVE_UINT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
+  const H5Handle d = file.dataset(std::string("/") + name);
+  require_integer_type(H5Dget_type(d.id), path, std::string("the dataset ") + name);
+  if (H5Dread(d.id, H5T_NATIVE_UINT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
     throw SavedRunError(path, std::string("cannot read the dataset ") + name + " as unsigned 64-bit counts");
   return v;
 }
 
-std::int64_t nside_attribute(hid_t file, const std::string& path) {
-  const H5Handle d{H5Dopen2(file, "map", H5P_DEFAULT), H5Dclose};
+std::int64_t nside_attribute(const H5File& file, const std::string& path) {
+  const H5Handle d = file.dataset("/map");
   std::int64_t nside = -1;
-  if (d.id < 0 || H5Aexists(d.id, "nside") <= 0) throw SavedRunError(path, "the dataset map has no nside");
+  if (H5Aexists(d.id, "nside") <= 0) throw SavedRunError(path, "the dataset map has no nside");
   const H5Handle a{H5Aopen(d.id, "nside", H5P_DEFAULT), H5Aclose};
   const H5Handle space{a.id < 0 ? -1 : H5Aget_space(a.id), H5Sclose};
   if (a.id >= 0) require_integer_type(H5Aget_type(a.id), path, "the attribute nside of the dataset map");
@@ -131,6 +115,13 @@ std::int64_t nside_attribute(hid_t file, const std::string& path) {
       H5Aread(a.id, H5T_NATIVE_INT64, &nside) < 0)
     throw SavedRunError(path, "cannot read the attribute nside of the dataset map");
   return nside;
+}
+
+// The reader's refusals as SavedRunError naming the file (and the object).
+H5Fail saved_run_error(const std::string& path) {
+  return [path](const std::string& object, const std::string& message) {
+    throw SavedRunError(path, object.empty() ? message : object + " " + message);
+  };
 }
 
 }  // namespace
@@ -216,33 +207,66 @@ bool SavedDir::holds(const std::string& name) const {
   return fs::exists(path(name), ec);
 }
 
+const json* SavedDir::recorded(const std::string& name) const {
+  const json* digests = this->digests();
+  return digests && digests->contains(name) ? &(*digests)[name] : nullptr;
+}
+
+void SavedDir::check_size(const std::string& name, std::uint64_t size) const {
+  const json* want = recorded(name);
+  if (!want || size == (*want)["bytes"].get<std::uint64_t>()) return;
+  throw SavedRunError(path(name), "it is " + std::to_string(size) + " bytes, but summary.json records " +
+                                      std::to_string((*want)["bytes"].get<std::uint64_t>()) +
+                                      ": it was changed or replaced after the run wrote it");
+}
+
+void SavedDir::check_digest(const std::string& name, const FileDigest& got) const {
+  check_size(name, got.bytes);
+  const json* want = recorded(name);
+  if (!want) return;
+  const std::string expected = (*want)["xxh3_128"].get<std::string>();
+  if (got.xxh3_128 != expected)
+    throw SavedRunError(path(name), "its XXH3-128 digest is " + got.xxh3_128 + ", but summary.json records " +
+                                        expected + ": it was damaged, or changed or replaced after the run wrote it");
+}
+
 std::string SavedDir::read(const std::string& name, const std::string& missing) const {
   const std::string p = path(name);
-  const json* digests = this->digests();
-  const json* want = digests && digests->contains(name) ? &(*digests)[name] : nullptr;
+  const json* want = recorded(name);
   const std::string gone = "missing" + (missing.empty() ? "" : ": " + missing);
-  if (digests && !want) {
+  if (checked() && !want) {
     std::error_code ec;
     if (!fs::exists(p, ec)) throw SavedRunError(p, gone);
     throw SavedRunError(p, "summary.json records no digest for it: it is not a file the run wrote");
   }
-  const std::uint64_t recorded = want ? (*want)["bytes"].get<std::uint64_t>() : UINT64_MAX;
-  const RegularFile f = read_regular_file(p, recorded);
+  const std::uint64_t most = want ? (*want)["bytes"].get<std::uint64_t>() : UINT64_MAX;
+  const RegularFile f = read_regular_file(p, most);
   if (f.error == ENOENT) throw SavedRunError(p, gone);
-  const bool too_large = want && f.size > recorded;
-  const bool too_small = want && f.why.empty() && f.bytes.size() != recorded;
-  if (too_large || too_small)
-    throw SavedRunError(p, "it is " + std::to_string(too_large ? f.size : f.bytes.size()) +
-                               " bytes, but summary.json records " + std::to_string(recorded) +
-                               ": it was changed or replaced after the run wrote it");
+  if (f.size > most) check_size(name, f.size);  // too large: said before it is read
   if (!f.why.empty()) throw SavedRunError(p, "cannot read it: " + f.why);
-  if (want) {
-    const std::string got = digest_bytes(f.bytes).xxh3_128, expected = (*want)["xxh3_128"].get<std::string>();
-    if (got != expected)
-      throw SavedRunError(p, "its XXH3-128 digest is " + got + ", but summary.json records " + expected +
-                                 ": it was damaged, or changed or replaced after the run wrote it");
-  }
+  check_digest(name, digest_bytes(f.bytes));
   return f.bytes;
+}
+
+std::optional<SavedDir> SavedDir::holding(const std::string& file) {
+  std::error_code ec;
+  const fs::path at = fs::canonical(file, ec);
+  if (ec) return std::nullopt;
+  const std::string dir = at.parent_path().string();
+  const RegularFile f = read_regular_file(dir + "/summary.json", kMaxSummaryBytes);
+  if (!f.why.empty()) return std::nullopt;
+  const json j = json::parse(f.bytes, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("arnoldweb") || !j["arnoldweb"].is_string()) return std::nullopt;
+  return SavedDir(dir, f.bytes);  // arnoldweb's: checked like any other
+}
+
+void check_run_file(const std::string& file, const OpenPlainFile& open) {
+  const std::optional<SavedDir> saved = SavedDir::holding(file);
+  if (!saved) return;
+  const std::string name = fs::canonical(file).filename().string();
+  if (!saved->recorded(name)) return;  // not a file the run wrote: the user's own, beside it
+  saved->check_size(name, open.size());  // before a byte is read
+  saved->check_digest(name, digest_file(open.fd(), saved->path(name)));
 }
 
 std::string SavedDir::note() const {
@@ -266,28 +290,27 @@ int read_saved_map_h5(const SavedDir& saved, Result& r) {
   const std::string path = saved.path("map.h5");
   std::string bytes = saved.read("map.h5", "the run made neither a velocity map nor a zoom "
                                            "(observe.velocity_map, observe.zoom)");
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const H5Handle f{open_image(bytes, path), H5Fclose};
+  const H5File f(bytes, path, saved_run_error(path));  // the bytes that were checked are the bytes read
   const hsize_t npix = 12 * nside * nside;
   const std::string declared_nside = "maps.nside = " + std::to_string(nside);
   // no velocity map: the dataset map is empty (a run with a zoom) or absent
-  const bool no_map = nside == 0 && dims_of(f.id, "map", path).empty();
-  r.map = no_map ? std::vector<std::uint64_t>() : read_counts(f.id, "map", {npix}, path, declared_nside);
-  if (npix && nside_attribute(f.id, path) != static_cast<std::int64_t>(nside))
-    throw SavedRunError(path, "the dataset map says nside " + std::to_string(nside_attribute(f.id, path)) +
+  const bool no_map = nside == 0 && dims_of(f, "map", path).empty();
+  r.map = no_map ? std::vector<std::uint64_t>() : read_counts(f, "map", {npix}, path, declared_nside);
+  if (npix && nside_attribute(f, path) != static_cast<std::int64_t>(nside))
+    throw SavedRunError(path, "the dataset map says nside " + std::to_string(nside_attribute(f, path)) +
                                   ", but " + declared_nside + " (summary.json)");
   r.nside = static_cast<int>(nside);
   r.frames.clear();
-  if (!dims_of(f.id, "frames", path).empty() || frames > 1) {
-    const auto all = read_counts(f.id, "frames", {frames, npix}, path,
+  if (!dims_of(f, "frames", path).empty() || frames > 1) {
+    const auto all = read_counts(f, "frames", {frames, npix}, path,
                                  "maps.frames = " + std::to_string(frames) + " and " + declared_nside);
     for (std::size_t k = 0; k < frames; ++k)
       r.frames.emplace_back(all.begin() + static_cast<std::ptrdiff_t>(k * npix),
                             all.begin() + static_cast<std::ptrdiff_t>((k + 1) * npix));
   }
   r.zoom.clear();
-  if (!dims_of(f.id, "zoom", path).empty() || zoom > 0)
-    r.zoom = read_counts(f.id, "zoom", {zoom, zoom}, path, "maps.zoom_resolution = " + std::to_string(zoom));
+  if (!dims_of(f, "zoom", path).empty() || zoom > 0)
+    r.zoom = read_counts(f, "zoom", {zoom, zoom}, path, "maps.zoom_resolution = " + std::to_string(zoom));
   return static_cast<int>(zoom);
 }
 
@@ -351,24 +374,12 @@ std::string read_saved_file(const std::string& dir, const std::string& name) {
   return detail::SavedDir(dir).read(name);
 }
 
-Continuation continuation_of(const std::string& dir, double duration) {
+std::string read_saved_hdf5_file(const std::string& dir, const std::string& name) {
   const detail::SavedDir saved(dir);
-  Continuation c;
-  c.source = saved.summary_path();
-  c.scene_toml = saved.text("/scene_toml");
-  const nlohmann::json& time = saved.summary().value("time", nlohmann::json::object());
-  if (time.is_object() && time.contains("end") && time["end"].is_number()) c.end_time = time["end"].get<double>();
-  const std::string states = saved.path("states.h5");
-  if (!std::filesystem::exists(states))
-    throw SavedRunError(states, "the run kept no final states to continue from: run it with "
-                                "observe.final_states = true");
-  saved.read("states.h5");  // checked against its size and digest in summary.json
-  std::ostringstream d;
-  d.precision(15);
-  d << duration;
-  c.overrides = {"ensemble.initial=\"file\"", "ensemble.file=" + states, "run.duration=" + d.str()};
-  c.labels = {"continue " + dir, "continue " + dir, "continue for " + d.str() + " T"};
-  return c;
+  std::string bytes = saved.read(name);
+  const std::string path = saved.path(name);
+  detail::H5File(bytes, path, saved_run_error(path)).check_every_link();  // h5py iterates: all of it, first
+  return bytes;
 }
 
 }  // namespace arnoldweb

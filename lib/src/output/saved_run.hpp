@@ -7,6 +7,7 @@
 //  - every other file has the size and XXH3-128 digest that summary.json
 //    records for it ("file_digests"); a directory written before the digests
 //    were recorded is read with a note saying that its files were not checked;
+//  - HDF5 files are opened by the one HDF5 reader (output/h5_reader.hpp);
 //  - the shapes summary.json declares ("maps": nside, frames, zoom) are those
 //    of the data, so nothing is read past the end of a map.
 // Every failure is a SavedRunError (exit 2) naming the file.
@@ -18,6 +19,7 @@
 #include <optional>
 #include <string>
 
+#include "arnoldweb/output.hpp"
 #include "arnoldweb/plan.hpp"
 #include "arnoldweb/result.hpp"
 
@@ -56,6 +58,16 @@ class SavedDir {
   // Whether summary.json records the files' digests (directories written
   // before arnoldweb recorded them do not).
   bool checked() const { return digests() != nullptr; }
+  // What summary.json records for `name` ({"bytes", "xxh3_128"}), or null.
+  const nlohmann::json* recorded(const std::string& name) const;
+  // SavedRunError naming the file when its size, or its size and digest,
+  // differ from what summary.json records (nothing when it records none).
+  void check_size(const std::string& name, std::uint64_t size) const;
+  void check_digest(const std::string& name, const FileDigest& digest) const;
+
+  // The output directory that holds `file`, when the directory of the file
+  // (links resolved) has a summary.json written by arnoldweb; else none.
+  static std::optional<SavedDir> holding(const std::string& file);
   // "" or a note for the user: the files of an older directory are read unchecked.
   std::string note() const;
 
@@ -68,6 +80,14 @@ class SavedDir {
   std::string dir_, text_;
   nlohmann::json j_;
 };
+
+// When `file` is a file that a run wrote (its directory's summary.json
+// records its digest), checks the open file against that size and digest, as
+// `continue` and every reader of saved runs do: SavedRunError naming it when
+// it was changed. A file that no summary.json records is the user's own and
+// is left alone. (state files: ensemble.file)
+class OpenPlainFile;
+void check_run_file(const std::string& file, const OpenPlainFile& open);
 
 // <dir>/map.h5 into r.map, r.frames (one map per frame), r.zoom and r.nside,
 // each checked against the shape summary.json declares for it ("maps").

@@ -20,6 +20,13 @@
 #include "params/kernel_params.hpp"
 #include "physics/host_model.hpp"
 
+// A built-in model's id: its AW_MODEL_<NAME> in the kernels (-DAW_MODEL=<id>), in kernel caches
+// and in the kernel lines of run summaries. Declared once, in its descriptor, as a line
+// "AW_MODEL_ID(<id>);": cmake/ArnoldwebModels.cmake reads it there, refuses a descriptor without
+// one and two models with one id, and generates the dispatch and the table's list in the order of
+// the ids. An id is never changed or given again: a new model takes a free one.
+#define AW_MODEL_ID(id) static_assert((id) >= 0 && (id) < 1000, "a model id is 0 to 999 (1000: expression models)")
+
 namespace arnoldweb::detail {
 
 // A model parameter's values as written in a scene, by key (a number, an array,

@@ -19,7 +19,7 @@ void plan_analysis(const Scene& scene, const Plan& p) {
     const double needed = 2.0 * scene.frequency_samples * scene.frequency_every;
     if (static_cast<double>(segments / p.frequency_stride) < 2.0 * scene.frequency_samples)
       fail_at(scene, "observe.frequencies.samples",
-              "two windows of " + std::to_string(scene.frequency_samples) + " samples every " +
+              "two windows of " + show_count(scene.frequency_samples) + " samples every " +
                   fmt(scene.frequency_every) + " T take " + fmt(needed) + " T, and run.duration is " +
                   fmt(scene.duration) + " T: choose fewer samples, a shorter interval or a longer run");
     if (p.slices > 1)

@@ -19,4 +19,10 @@ std::string show_number(double v) {
   return buf;
 }
 
+std::string show_count(std::uint64_t n) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%llu", static_cast<unsigned long long>(n));
+  return buf;
+}
+
 }  // namespace arnoldweb::detail

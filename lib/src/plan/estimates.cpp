@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "arnoldweb/device.hpp"
+#include "arnoldweb/device_info.hpp"
 #include "arnoldweb/plan.hpp"
 #include "aw_params.h"
 #include "plan/checks.hpp"
@@ -63,8 +63,11 @@ bool nvidia_opencl(const DeviceInfo& d) {
 // The largest launch whose frequency series fit in `series_budget` bytes.
 std::uint64_t largest_chunk_within(const Plan& plan, double series_budget) {
   std::uint64_t m = has_states(plan) ? kMaxChunkStates : kMaxChunk;
-  // 32-bit counts per launch: windows * chunk must stay below 2^32
-  m = std::min<std::uint64_t>(m, 4000000000ull / static_cast<std::uint64_t>(std::max<std::int64_t>(plan.windows, 1)));
+  // 32-bit counts per launch: the windows a launch bins * chunk must stay below 2^32 (a launch of a
+  // time-sliced plan bins the windows that end in its slice: at most one more than fit in it)
+  const std::int64_t windows = plan.slices > 1 ? plan.slice_segments / std::max<std::int64_t>(plan.segments_per_window, 1) + 1
+                                               : plan.windows;
+  m = std::min<std::uint64_t>(m, 4000000000ull / static_cast<std::uint64_t>(std::max<std::int64_t>(windows, 1)));
   const double series = series_bytes(plan, 8);
   if (series > 0) m = std::min<std::uint64_t>(m, std::max<std::uint64_t>(1, static_cast<std::uint64_t>(series_budget / series)));
   if (plan.scene.chunk) m = plan.scene.chunk;

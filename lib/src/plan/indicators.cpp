@@ -33,9 +33,9 @@ Scene with_grid_size(const Scene& scene) {
   if (!n || scene.trajectories == n) return scene;
   if (written(scene, "ensemble.trajectories"))
     fail_at(scene, "ensemble.trajectories",
-            "ensemble.initial = \"grid\" integrates one trajectory per grid point: the grid has " + std::to_string(n) +
-                " points, ensemble.trajectories says " + std::to_string(scene.trajectories) +
-                "; leave ensemble.trajectories out or set it to " + std::to_string(n));
+            "ensemble.initial = \"grid\" integrates one trajectory per grid point: the grid has " + show_count(n) +
+                " points, ensemble.trajectories says " + show_count(scene.trajectories) +
+                "; leave ensemble.trajectories out or set it to " + show_count(n));
   Scene s = scene;
   s.trajectories = n;
   return s;

@@ -1,42 +1,12 @@
 // arnoldweb: planning a job: the scene and its panels (job.hpp).
 #include "arnoldweb/job.hpp"
 
-#include "output/pictures.hpp"
 #include "plan/checks.hpp"
 
 namespace arnoldweb {
 
-namespace {
-
-// A scene that asks for pictures where none can be drawn runs and writes its
-// numbers; its plan says why it will draw none.
-Plan plan_resolved(const Scene& scene, const StepResolver& resolve) {
-  Plan p = make_plan(scene.step_auto && resolve ? resolve(scene) : scene);
-  if (std::string why; p.scene.images && !detail::pictures_available(&why))
-    p.warnings.push_back({"output.images", "output.images: no pictures will be drawn: " + why});
-  return p;
-}
-
-// The states a part starts from when it names no file.
-void give_states(JobPart& part, const std::shared_ptr<const StateSet>& states) {
-  Plan& p = part.plan;
-  if (p.scene.initial != "file" || p.states) return;
-  if (!states)
-    detail::fail_at(p.scene, "ensemble.initial",
-                    "\"file\" needs ensemble.file = \"path.h5\", the HDF5 file of the states (docs/outputs.md, "
-                    "\"State files\"), or the states from Python (run(scene, initial=(X, P)))");
-  if (states->count != p.scene.trajectories) p = with_trajectories(p, states->count);
-  p.states = states;
-}
-
-}  // namespace
-
-Job plan_job(const Scene& scene, const StepResolver& resolve, std::shared_ptr<const StateSet> states) {
-  Job job;
-  JobPart main;
-  main.plan = plan_resolved(scene, resolve);
-  give_states(main, states);
-  job.parts.push_back(std::move(main));
+std::vector<PartScene> part_scenes(const Scene& scene) {
+  std::vector<PartScene> parts = {{"", "", "", scene}};
   for (const Scene::Panel& panel : scene.panels) {
     // the panel's overrides, then the user's (so --set applies to every panel)
     std::vector<std::string> sets = panel.sets;
@@ -47,17 +17,31 @@ Job plan_job(const Scene& scene, const StepResolver& resolve, std::shared_ptr<co
     sets.insert(sets.end(), scene.overrides.begin(), scene.overrides.end());
     labels.insert(labels.end(), scene.override_labels.begin(), scene.override_labels.end());
     labels.resize(sets.size());
-    sets.push_back("output.dir=" + scene.output_dir + "/panel-" + panel.name);
-    labels.push_back("the output directory of panel " + panel.name);
+    const std::string label = "the output directory of panel " + panel.name;
+    sets.push_back(string_override("output.dir", scene.output_dir + "/panel-" + panel.name, label));
+    labels.push_back(label);
     Scene s = parse_scene(scene.text, scene.file, sets, labels);
     s.panels.clear();
-    JobPart part;
-    part.name = panel.name;
-    part.title = panel.title;
-    part.subdir = "panel-" + panel.name;
-    part.plan = plan_resolved(s, resolve);
-    give_states(part, states);
-    job.parts.push_back(std::move(part));
+    parts.push_back({panel.name, panel.title, "panel-" + panel.name, std::move(s)});
+  }
+  return parts;
+}
+
+Job plan_job(const Scene& scene, const PlanInputs& inputs, const StepResolver& resolve) {
+  Job job;
+  for (const PartScene& part : part_scenes(scene)) {
+    const Scene& s = part.scene;
+    Plan plan = make_plan(s.step_auto && resolve ? resolve(s, inputs) : s, inputs);
+    if (plan.scene.initial == "file" && !plan.states) {
+      if (!plan.scene.initial_file.empty())
+        detail::fail_at(plan.scene, "ensemble.file",
+                        "its states are read before planning, and these inputs lack them (read_plan_inputs, "
+                        "inputs.hpp)");
+      detail::fail_at(plan.scene, "ensemble.initial",
+                      "\"file\" needs ensemble.file = \"path.h5\", the HDF5 file of the states (docs/outputs.md, "
+                      "\"State files\"), or the states from Python (run(scene, initial=(X, P)))");
+    }
+    job.parts.push_back({part.name, part.title, part.subdir, std::move(plan)});
   }
   return job;
 }

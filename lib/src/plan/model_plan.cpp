@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "plan/checks.hpp"
+#include "plan/plan_params.hpp"
 
 namespace arnoldweb::detail {
 namespace {
@@ -133,12 +134,40 @@ void plan_accessible(const Scene& scene, const ModelDescriptor& model, const Rea
 //   libration frequency sqrt(max a_i ||Hess V||) of its deepest well, where the
 //   velocity v = dX/dt = a_i p_i + b_i is bounded by the energy when every
 //   a_i > 0 (sum v_i^2 / (2 a_i) <= E - min V + sum b_i^2 / (2 a_i), so
-//   |k.v| <= sqrt(2 K sum a_i k_i^2)), else by the largest |v_i| of the scene's
-//   first kVelocitySample initial states plus what the potential's range can
-//   add (sqrt(2 a_i (max V - min V))) (an estimate, not a bound).
+//   |k.v| <= sqrt(2 K sum a_i k_i^2)), else by the largest |v_i| of the
+//   trajectories' initial states plus what the potential's range can add
+//   (sqrt(2 a_i (max V - min V))): the states given (ensemble.initial = "file",
+//   every one), or the first kVelocitySample the scene draws (an estimate, not
+//   a bound).
 constexpr int kVelocitySample = 4096;
-double model_frequency(const Scene& scene, const ModelDescriptor& model, const KernelParams& kp,
-                       int initial, std::string& basis) {
+namespace {
+
+// The largest |v_c| = |a_c p_c + b_c| of the states, and how many were counted.
+std::uint64_t fastest_velocities(const ModelDescriptor& model, const KernelParams& kp, int initial, const StateSet* states,
+                       std::array<double, 3>& vmax) {
+  const auto k = model.kinetic(kp.reals);
+  vmax = {};
+  std::uint64_t found = 0;
+  auto count = [&](const double* pm) {
+    ++found;
+    for (int c = 0; c < 3; ++c) vmax[c] = std::max(vmax[c], std::fabs(k[c] * pm[c] + k[3 + c]));
+  };
+  if (states) {
+    for (std::uint64_t i = 0; i < states->count; ++i)
+      if (states->status[i] == 0) count(&states->momentum[3 * i]);
+    return found;
+  }
+  for (int i = 0; i < kVelocitySample; ++i) {
+    double u[3], pm[3];
+    if (model.initial_state(initial, static_cast<std::uint64_t>(i), kp.reals, kp.ints, u, pm)) count(pm);
+  }
+  return found;
+}
+
+}  // namespace
+
+double model_frequency(const Scene& scene, const ModelDescriptor& model, const KernelParams& kp, int initial,
+                       const StateSet* states, std::string& basis) {
   const RealParams& rp = kp.reals;
   if (model.closed_frequency) {
     const double omega = model.closed_frequency(scene.energy, rp);
@@ -159,26 +188,21 @@ double model_frequency(const Scene& scene, const ModelDescriptor& model, const K
     basis = "|k.dX/dt| <= " + fmt(drift) + " from the energy, libration " + fmt(libration);
   } else {
     std::array<double, 3> vmax{};
-    int found = 0;
-    for (int i = 0; i < kVelocitySample; ++i) {
-      double u[3], pm[3];
-      if (!model.initial_state(initial, static_cast<std::uint64_t>(i), rp, kp.ints, u, pm)) continue;
-      ++found;
-      for (int c = 0; c < 3; ++c) vmax[c] = std::max(vmax[c], std::fabs(k[c] * pm[c] + k[3 + c]));
-    }
+    const std::uint64_t found = fastest_velocities(model, kp, initial, states, vmax);
     for (int c = 0; c < 3; ++c)
       if (k[c] > 0) vmax[c] += std::sqrt(2 * k[c] * (v[1] - v[0]));
     for (const auto& w : waves)
       drift = std::max(drift, std::fabs(w[0]) * vmax[0] + std::fabs(w[1]) * vmax[1] + std::fabs(w[2]) * vmax[2]);
     basis = "|dX/dt| <= (" + fmt(vmax[0]) + ", " + fmt(vmax[1]) + ", " + fmt(vmax[2]) + ") estimated from " +
-            std::to_string(found) + " initial states, libration " + fmt(libration);
+            show_count(found) + (states ? " states of " + states->source : std::string(" initial states")) +
+            ", libration " + fmt(libration);
   }
   return drift + libration;
 }
 
 void plan_guard(const Scene& scene, const ModelDescriptor& model, const KernelParams& kp, Plan& p) {
   std::string basis;
-  const double omega = model_frequency(scene, model, kp, p.kernel.initial, basis);
+  const double omega = model_frequency(scene, model, kp, p.kernel.initial, p.states.get(), basis);
   guard_step(scene, model, omega, basis, p);
 }
 
@@ -191,7 +215,9 @@ void guard_step(const Scene& scene, const ModelDescriptor& model, double omega, 
   p.guard.quantity = model.closed_frequency ? "h k |p|max" : "h omega_max";
   const std::string& what = p.guard.quantity;
   if (model.effective_perturbation) p.effective_perturbation = model.effective_perturbation(scene.energy);
-  p.warnings.clear();
+  p.warnings.erase(std::remove_if(p.warnings.begin(), p.warnings.end(),
+                                  [](const Plan::Warning& w) { return w.key == "integrator.step"; }),
+                   p.warnings.end());  // the step's own, made again (with_step)
   if (p.guard.refused() && !scene.allow_unsafe_step)
     fail_at(scene, "integrator.step",
             "step " + fmt(p.step) + " T is unsafe at E = " + fmt(scene.energy) + ": " + what + " = " +
@@ -210,3 +236,12 @@ void guard_step(const Scene& scene, const ModelDescriptor& model, double omega, 
 }
 
 }  // namespace arnoldweb::detail
+
+namespace arnoldweb {
+
+std::vector<std::array<int, 3>> model_resonances(const Plan& plan) {
+  if (!plan.model || plan.model->overlay_all_resonances || !plan.params) return {};
+  return plan.model->wave_vectors(detail::params(plan).reals);
+}
+
+}  // namespace arnoldweb

@@ -27,9 +27,10 @@ void plan_model_values(const Scene& scene, const ModelDescriptor& model, RealPar
 void plan_accessible(const Scene& scene, const ModelDescriptor& model, const RealParams& rp, Plan& p);
 
 // The model's largest frequency omega at the scene's energy (radians per time
-// unit) and how it was found (`basis`).
+// unit) and how it was found (`basis`); where the momenta do not follow from the
+// energy, from the given states (null: those the initial kind draws).
 double model_frequency(const Scene& scene, const ModelDescriptor& model, const KernelParams& kp, int initial,
-                       std::string& basis);
+                       const StateSet* states, std::string& basis);
 
 // The step-size guard of the plan's step (plan.guard, warnings), or SceneError
 // naming integrator.step when it is unsafe.

@@ -16,8 +16,8 @@
 #include "plan/indicators.hpp"
 #include "plan/analysis_plan.hpp"
 #include "plan/model_plan.hpp"
-#include "plan/plan_states.hpp"
 #include "plan/plan_params.hpp"
+#include "plan/plan_states.hpp"
 #include "plan/output_table.hpp"
 #include "plan/schedule.hpp"
 
@@ -25,7 +25,6 @@ namespace arnoldweb {
 namespace {
 
 using detail::fail_at;
-std::string fmt(double v) { return detail::show_number(v); }
 
 constexpr double kTwoPi = 6.283185307179586476925;
 constexpr double kDeg = M_PI / 180.0;
@@ -71,8 +70,8 @@ void plan_kernel(const Scene& scene, const detail::ModelDescriptor& model, Plan&
             "terms with observe.fli, observe.megno or observe.lyapunov (" + p.method.name + " has them)");
   if ((scene.initial_states || scene.final_states) && scene.trajectories > kMaxStateRecords)
     fail_at(scene, scene.final_states ? "observe.final_states" : "observe.initial_states",
-            "state records are kept for at most " + std::to_string(kMaxStateRecords) + " trajectories (" +
-                std::to_string(scene.trajectories) + " asked for)");
+            "state records are kept for at most " + detail::show_count(kMaxStateRecords) + " trajectories (" +
+                detail::show_count(scene.trajectories) + " asked for)");
 }
 
 void plan_histograms(const Scene& scene, Plan& p) {
@@ -154,7 +153,7 @@ void fill_initial(const Scene& scene, int initial, detail::RealParams& rp) {
 void fill_ints(const Scene& scene, const Plan& p, detail::IntParams& ip) {
   ip.seed = static_cast<std::int64_t>(scene.seed);
   fill_schedule(p, ip);
-  ip.nside = scene.nside;
+  ip.nside = p.npix ? scene.nside : 0;  // no map: the zoom histogram starts at 0, as hist_size says
   ip.max_attempts = static_cast<std::int64_t>(std::ceil(kAttemptsTimesFraction / p.accessible_fraction));
   ip.inject_index = -1;
   ip.zoom_resolution = p.zoom_resolution;
@@ -166,23 +165,20 @@ void fill_ints(const Scene& scene, const Plan& p, detail::IntParams& ip) {
 
 }  // namespace
 
-Plan make_plan(const Scene& scene_as_written) {
+Plan make_plan(const Scene& scene_as_written, const PlanInputs& inputs) {
   Scene scene = detail::with_grid_size(scene_as_written);
-  std::shared_ptr<StateSet> states = detail::read_scene_states(scene);  // ensemble.initial = "file"
+  std::shared_ptr<const StateSet> states = detail::plan_states(scene, inputs);  // ensemble.initial = "file"
   if (scene.step_auto)
     fail_at(scene, "integrator.step",
-            "\"auto\" is resolved before planning, by a pilot ensemble on a device: resolve_step(scene, backend) "
-            "(accuracy.hpp; the arnoldweb command does this)");
+            "\"auto\" is resolved before planning, by a pilot ensemble on a device: resolve_step(scene, inputs, "
+            "backend) (accuracy.hpp; the arnoldweb command does this)");
   Plan p;
   p.scene = scene;
+  p.states = std::move(states);
   auto params = std::make_shared<detail::KernelParams>();
   const detail::ModelDescriptor& model = detail::model_of(scene);
   p.model = &model;
   detail::plan_model_values(scene, model, params->reals);
-  if (states) {
-    detail::check_scene_states(*states, scene, model, params->reals);
-    p.states = std::move(states);
-  }
   plan_method(scene, p);
   if (scene.initial == "grid")
     detail::plan_grid(scene, model, params->reals, p);
@@ -195,6 +191,9 @@ Plan make_plan(const Scene& scene_as_written) {
   fill_reals(scene, p, params->reals);
   fill_ints(scene, p, params->ints);
   detail::plan_guard(scene, model, *params, p);  // may draw initial states: after the blocks are filled
+  // a run that asks for pictures where none can be drawn computes and writes the rest
+  if (scene.images && !inputs.no_pictures.empty())
+    p.warnings.push_back({"output.images", "output.images: no pictures will be drawn: " + inputs.no_pictures});
   p.params = std::move(params);
   return p;
 }
@@ -228,7 +227,7 @@ double largest_frequency(const Scene& scene, std::string* basis) {
   kp.ints.seed = static_cast<std::int64_t>(scene.seed);
   kp.ints.max_attempts = 1000;
   std::string b;
-  const double omega = detail::model_frequency(scene, model, kp, initial_kind(scene), b);
+  const double omega = detail::model_frequency(scene, model, kp, initial_kind(scene), nullptr, b);
   if (basis) *basis = b;
   return omega;
 }

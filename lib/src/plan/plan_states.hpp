@@ -1,24 +1,18 @@
 // arnoldweb: the planner's part for given initial states (ensemble.initial =
-// "file" with ensemble.file; docs/outputs.md, "State files"): the file read
-// (StateError naming the file, dataset and row), ensemble.trajectories taken
-// from it (refused when written as another number), and every state's energy
-// checked against the scene's model. Without ensemble.file the states come from
-// the caller (Python's initial=), who attaches them to the plan.
+// "file"; docs/outputs.md, "State files"). The states are an input of the
+// plan, read and checked before planning (read_plan_inputs, inputs.hpp);
+// here ensemble.trajectories is taken from them (refused when written as
+// another number), and ensemble.file is refused with another initial kind.
 #pragma once
 
 #include <memory>
 
 #include "arnoldweb/plan.hpp"
-#include "params/kernel_params.hpp"
-#include "physics/model_descriptor.hpp"
 
 namespace arnoldweb::detail {
 
-// The states of ensemble.file (ensemble.initial = "file"), or null; refuses
-// ensemble.file with another kind. Sets scene.trajectories to their number.
-std::shared_ptr<StateSet> read_scene_states(Scene& scene);
-
-// Their energies under the scene's model (the model's parameters in rp).
-void check_scene_states(StateSet& states, const Scene& scene, const ModelDescriptor& model, const RealParams& rp);
+// The states the scene starts from (null: none given, or another initial
+// kind); sets scene.trajectories to their number.
+std::shared_ptr<const StateSet> plan_states(Scene& scene, const PlanInputs& inputs);
 
 }  // namespace arnoldweb::detail

@@ -4,6 +4,8 @@
 #include <xxhash.h>
 
 #include <cstdio>
+#include <map>
+#include <sstream>
 
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/run.hpp"
@@ -94,18 +96,60 @@ CheckpointInfo read_checkpoint_info(const std::string& image, const std::string&
   return info;
 }
 
+namespace detail {
+namespace {
+
+// A scene's TOML as "[table] key" -> value ("not set" for a key without one).
+std::map<std::string, std::string> toml_values(const std::string& toml) {
+  std::map<std::string, std::string> values;
+  std::istringstream in(toml);
+  std::string line, table;
+  const std::string not_set = " is not set";
+  int arrays = 0;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    if (line[0] == '[') {
+      table = line;
+      if (line.compare(0, 2, "[[") == 0) table += " " + std::to_string(arrays++);  // each [[panel]] its own
+    } else if (line[0] == '#') {
+      if (table.empty() || line.size() < 2 + not_set.size() ||
+          line.compare(line.size() - not_set.size(), not_set.size(), not_set) != 0)
+        continue;  // the header's comments
+      values[table + " " + line.substr(2, line.size() - 2 - not_set.size())] = "not set";
+    } else if (const std::size_t eq = line.find(" = "); eq != std::string::npos) {
+      values[table + " " + line.substr(0, eq)] = line.substr(eq + 3);
+    }
+  }
+  return values;
+}
+
+}  // namespace
+
+std::string values_apart_from_defaults(const Scene& scene) {
+  const Scene defaults;
+  Scene s = scene;
+  s.device = defaults.device;
+  s.output_dir = defaults.output_dir;
+  s.checkpoint_every = defaults.checkpoint_every;
+  s.file.clear();  // comments of to_toml(): how the values were given, not what they are
+  s.overrides.clear();
+  s.override_labels.clear();
+  const auto values = toml_values(s.to_toml()), default_values = toml_values(defaults.to_toml());
+  std::string text;
+  for (const auto& [key, value] : values) {
+    const auto d = default_values.find(key);
+    if (d == default_values.end() || d->second != value) text += key + " = " + value + "\n";
+  }
+  return text;
+}
+
+}  // namespace detail
+
 std::string job_identity(const Job& job) {
   XXH3_state_t* st = XXH3_createState();
   XXH3_128bits_reset(st);
   for (const JobPart& part : job.parts) {
-    Scene s = part.plan.scene;
-    s.device = "";
-    s.output_dir = "";
-    s.checkpoint_every = -1;
-    s.file.clear();  // comments of to_toml(): how the values were given, not what they are
-    s.overrides.clear();
-    s.override_labels.clear();
-    const std::string text = part.name + "\n" + s.to_toml();
+    const std::string text = part.name + "\n" + detail::values_apart_from_defaults(part.plan.scene);
     XXH3_128bits_update(st, text.data(), text.size());
   }
   const XXH128_hash_t h = XXH3_128bits_digest(st);

@@ -6,8 +6,16 @@
 #include <vector>
 
 #include "arnoldweb/checkpoint.hpp"
+#include "arnoldweb/scene.hpp"
 
 namespace arnoldweb::detail {
+
+// The identity's text of one scene: its values that differ from the defaults
+// (Scene{}), one "[table] key = value" line each (a panel's too); the keys that do not change results (run.device, output.dir,
+// run.checkpoint_every) left out. A key that a later arnoldweb adds, at its
+// default, leaves it unchanged: a long campaign's checkpoint resumes across
+// such versions.
+std::string values_apart_from_defaults(const Scene& scene);
 
 std::string write_checkpoint(const CheckpointInfo& info, const std::vector<std::string>& part_images);
 // Checks integrity (CheckpointError naming `path`); fills info and the part images.

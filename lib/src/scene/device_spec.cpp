@@ -21,8 +21,11 @@ bool is_device_id(const std::string& id) {
   if (id == "cpu") return true;
   for (const std::string prefix : {"opencl:", "cuda:"}) {
     if (id.compare(0, prefix.size(), prefix) != 0) continue;
+    // N as `arnoldweb devices` writes it: decimal digits without a leading zero
+    // ("opencl:00" names no device, so it is no id either)
     const std::string n = id.substr(prefix.size());
-    return !n.empty() && n.size() <= 9 && std::all_of(n.begin(), n.end(), [](char c) { return c >= '0' && c <= '9'; });
+    return !n.empty() && n.size() <= 9 && (n == "0" || n[0] != '0') &&
+           std::all_of(n.begin(), n.end(), [](char c) { return c >= '0' && c <= '9'; });
   }
   return false;
 }

@@ -430,7 +430,7 @@ void run_keys(Rows& add) {
       real_into(&Scene::slice, [](double v) { return v >= 0; }),
       "Time slices of long trajectories, in T (0: none): each slice advances every trajectory of the run by this "
       "much, and a checkpoint between slices holds their whole state (docs/cluster.md, \"Long trajectories\"); a "
-      "multiple of observe.energy_error.every (of run.average without energy tracking).");
+      "multiple of the shortest sample interval (of run.average when nothing is sampled).");
   const std::string forms = "\"auto\", \"all\", \"cpu\", \"opencl:N\", \"cuda:N\" or a list \"cuda:0,cuda:1\"";
   add("run.device", "string", forms,
       forms + " (N = 0, 1, ...: the index in `arnoldweb devices`; a list names each device once)",
@@ -567,11 +567,29 @@ void observe_keys(Rows& add) {
 std::string triple_literal(const std::array<double, 3>& v) {
   return "[" + toml_double(v[0]) + ", " + toml_double(v[1]) + ", " + toml_double(v[2]) + "]";
 }
+// A direction (observe.diffusion.along and .across, observe.tangent_initial) is
+// normalised by its length: its largest absolute component must lie where the sum of the
+// squares neither overflows nor underflows ([1e200, 1e200, 0] squared is inf,
+// [1e-170, 1e-170, 0] squared is 0). Reads `count` floats into `out`.
+bool read_direction(Reader& r, const std::string& key, const toml::node& n, std::size_t count,
+                    std::vector<double>& out) {
+  std::vector<double> v;
+  if (!r.reals(key, n, v, count, [](const std::vector<double>&) { return true; })) return false;
+  double largest = 0;
+  for (double x : v) largest = std::max(largest, std::fabs(x));
+  if (!(largest >= 1e-150 && largest <= 1e150)) {
+    r.bad(key, n, true, largest == 0 ? " (the zero vector has no direction)"
+                                     : " (its length cannot be computed in double precision: scale it)");
+    return false;
+  }
+  out = v;
+  return true;
+}
+constexpr const char* kDirectionRange = "largest absolute component from 1e-150 to 1e150";
 Read direction_into(std::array<double, 3> Scene::*f) {
   return [f](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
     std::vector<double> v;
-    if (r.reals(key, n, v, 3, [](const std::vector<double>& x) { return x[0] != 0 || x[1] != 0 || x[2] != 0; }))
-      s.*f = {v[0], v[1], v[2]};
+    if (read_direction(r, key, n, 3, v)) s.*f = {v[0], v[1], v[2]};
   };
 }
 
@@ -597,8 +615,9 @@ void analysis_keys(Rows& add) {
   add("observe.frequencies.every", "float", "> 0, a multiple of integrator.step",
       "a finite float greater than 0 (in units of T)", real_of(&Scene::frequency_every),
       real_into(&Scene::frequency_every, positive),
-      "Sample interval, in T (a multiple of integrator.step; observe.energy_error.every and run.average are "
-      "multiples of it).");
+      "Sample interval, in T. The shortest of the sample intervals (observe.energy_error.every, "
+      "observe.frequencies.every, observe.diffusion.every, observe.diffusion.average_every) divides run.average "
+      "and is a multiple of integrator.step; every other is a multiple of it.");
   add("observe.frequencies.window", "integer", "0 to 4", "an integer from 0 to 4", integer_of(&Scene::frequency_window),
       integer_into(&Scene::frequency_window, [](std::int64_t v) { return v >= 0 && v <= 4; }),
       "Order p of Laskar's window chi_p (1: Hanning, frequency error ~ 1/T^4; 2: ~ 1/T^6; 0: none).");
@@ -622,13 +641,16 @@ void analysis_keys(Rows& add) {
       "growth of the variance with a bootstrap error bar and the growth's linearity (a warning where it is not "
       "diffusive): diffusion.h5, diffusion.csv, diffusion.png.",
       Shape::Composite);
-  add("observe.diffusion.every", "float", "> 0, a multiple of the energy sample interval",
+  add("observe.diffusion.every", "float", "> 0, divides run.duration, a multiple of the shortest sample interval",
       "a finite float greater than 0 (in units of T)", real_of(&Scene::diffusion_every),
-      real_into(&Scene::diffusion_every, positive), "Sample interval of the actions, in T.");
-  add("observe.diffusion.along", "array of 3 floats", "not all zero", "an array [a, b, c] of floats, not all zero",
+      real_into(&Scene::diffusion_every, positive),
+      "Sample interval of the actions, in T; it may be shorter than observe.energy_error.every (the rule of "
+      "observe.frequencies.every).");
+  add("observe.diffusion.along", "array of 3 floats", kDirectionRange, std::string("an array [a, b, c] of floats, ") + kDirectionRange,
       [](const Scene& s) { return triple_literal(s.diffusion_along); }, direction_into(&Scene::diffusion_along),
       "The resonance's direction in action space (normalised).");
-  add("observe.diffusion.across", "array of 3 floats", "not all zero, not along", "an array [a, b, c] of floats, not all zero",
+  add("observe.diffusion.across", "array of 3 floats", std::string(kDirectionRange) + ", not along",
+      std::string("an array [a, b, c] of floats, ") + kDirectionRange,
       [](const Scene& s) { return triple_literal(s.diffusion_across); }, direction_into(&Scene::diffusion_across),
       "A direction across the resonance (made orthogonal to `along`, normalised).");
   add("observe.diffusion.fit_from", "float", ">= 0", "a finite float >= 0 (in units of T)",
@@ -719,14 +741,10 @@ void indicator_keys(Rows& add) {
       "Lyapunov exponent from its slope.");
   add("observe.lyapunov", "boolean", "true or false", "true or false", bool_of(&Scene::lyapunov),
       bool_into(&Scene::lyapunov), "Finite-time maximal Lyapunov exponent, log(norm of w(t)) / t, of every trajectory, in 1/T.");
-  add("observe.tangent_initial", "array of 6 floats", "not all zero", "an array of 6 finite floats, not all zero",
+  add("observe.tangent_initial", "array of 6 floats", kDirectionRange, std::string("an array of 6 floats, ") + kDirectionRange,
       [](const Scene& s) { return list(s.tangent_initial); },
       [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
-        r.reals(key, n, s.tangent_initial, 6, [](const std::vector<double>& v) {
-          for (double x : v)
-            if (x != 0) return true;
-          return false;
-        });
+        read_direction(r, key, n, 6, s.tangent_initial);
       },
       "Initial tangent vector (dX in radians, dP) of the indicators, normalised to 1. The default has no symmetry "
       "between coordinates (a symmetric one stays in symmetric planes and hides resonances such as I1 = I2).");

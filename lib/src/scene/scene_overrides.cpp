@@ -161,3 +161,16 @@ void check_replaced_values(const toml::table& file, const Origins& applied, Prob
 }
 
 }  // namespace arnoldweb::scene_detail
+
+namespace arnoldweb {
+
+std::string string_override(const std::string& key, const std::string& value, const std::string& label) {
+  const std::string quoted = scene_detail::toml_string(value);  // U+FFFD for bytes that are not UTF-8
+  if (quoted.find("\xEF\xBF\xBD") != std::string::npos && value.find("\xEF\xBF\xBD") == std::string::npos)
+    throw SceneError(label, 0, 0, key,
+                     "is not UTF-8 text, and a scene (TOML, as summary.json records it) holds only UTF-8: "
+                     "give a name in UTF-8");
+  return key + "=" + quoted;
+}
+
+}  // namespace arnoldweb

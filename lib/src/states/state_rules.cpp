@@ -9,6 +9,7 @@ namespace arnoldweb::detail {
 namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925;
+constexpr auto kMaxStateWinding = static_cast<std::int64_t>(kMaxStateTurns);  // 2^52
 
 bool finite3(const double* v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
@@ -46,13 +47,19 @@ void StateRows::set_positions(StateSet& s, const std::vector<double>& positions,
       double& wrapped = s.position_turns[3 * i + k];
       std::int64_t& whole = s.winding[3 * i + k];
       if (winding) {
+        const std::int64_t w = (*winding)[3 * i + k];
+        if (checked && (w > kMaxStateWinding || w < -kMaxStateWinding))
+          fail(winding_dataset, i,
+               "the winding count " + std::to_string(w) +
+                   " is out of range: at most 2^52 whole turns (4503599627370496) either way, as for unwrapped "
+                   "positions (docs/outputs.md, \"State files\")");
         if (checked && std::fabs(x[k]) > half)
           fail(dataset, i,
                "the position " + show_row(x) + " is out of range: with " + winding_dataset +
                    ", positions are the wrapped part, within [-1/2, 1/2] turns ([-pi, pi] radians); leave " +
                    winding_dataset + " out to give unwrapped positions");
         wrapped = u;
-        whole = (*winding)[3 * i + k];
+        whole = w;
       } else if (std::isfinite(u) && std::fabs(u) <= kMaxStateTurns) {
         const double w = std::nearbyint(u);  // exact: |u| <= 2^52
         wrapped = u - w;
@@ -66,6 +73,22 @@ void StateRows::set_positions(StateSet& s, const std::vector<double>& positions,
       }
     }
   }
+}
+
+void check_start_time(const StateSet& s, double duration) {
+  if (!s.has_time || !(duration > 0)) return;
+  const double end = s.time + duration;
+  const double spacing = std::nextafter(end, HUGE_VAL) - end;  // between doubles at the end time
+  if (std::isfinite(end) && spacing <= std::ldexp(duration, -20)) return;
+  // the largest time whose end time keeps that resolution: below 2^(33 + floor(log2 duration))
+  const double most = std::ldexp(1.0, 33 + std::ilogb(duration)) - duration;
+  throw StateError(s.source, "", -1,
+                   "the attribute time is " + show_number(s.time) + " T, too large for run.duration = " +
+                       show_number(duration) + ": doubles there are " + show_number(spacing) +
+                       " T apart, so the run's end time (time + run.duration) would not be its start plus " +
+                       show_number(duration) + " T; with this run.duration the time must be below " +
+                       show_number(most) + " T (about 2^32 durations: the end time then exact to 2^-20 of the "
+                       "duration)");
 }
 
 void StateRows::check_momenta(const StateSet& s, const std::string& dataset) const {

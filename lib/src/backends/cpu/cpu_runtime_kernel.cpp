@@ -154,6 +154,7 @@ std::string cpu_expression_source(const std::string& model_source, bool single_p
   std::string text(embedded_file("backends/cpu/cpu_kernel_variant.cpp.in"));
   replace_all(text, "@VARIANT@", variant);
   replace_all(text, "@MODEL_ID@", "1000");  // aw_models.h: an expression model
+  replace_all(text, "@MODEL_HEADER_DEFINE@", "");  // the sources are flattened: the dispatch includes its header
   replace_all(text, "@PRECISION_DEFINE@", single_precision ? "#define AW_FLOAT 1" : "");
   replace_all(text, "@MATH_DEFINE@", native_math ? "#define AW_NATIVE_MATH 1" : "");
   const CpuIsa& isa = cpu_isa_selected();

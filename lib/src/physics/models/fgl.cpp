@@ -5,6 +5,8 @@
 
 namespace arnoldweb::detail {
 
+AW_MODEL_ID(1);  // for good (model_descriptor.hpp)
+
 ModelDescriptor describe_fgl() {
   ModelDescriptor m;
   m.title = "Froeschle, Guzzo & Lega, Graphical evolution of the Arnold web, Science 289 (2000) 2108";

@@ -4,6 +4,8 @@
 #include "physics/model_table.hpp"
 
 namespace arnoldweb::detail {
+
+AW_MODEL_ID(2);  // for good (model_descriptor.hpp)
 namespace {
 
 constexpr int kMaxHarmonics = 32;  // AW_FOURIER_MAX (lib/device/models/aw_fourier.h)

@@ -5,6 +5,8 @@
 
 namespace arnoldweb::detail {
 
+AW_MODEL_ID(0);  // for good (model_descriptor.hpp)
+
 ModelDescriptor describe_seibert2011() {
   ModelDescriptor m;
   m.title = "Seibert, Denisov, Ponomarev & Hanggi, Mapping the Arnold web with a GPU-supercomputer";

@@ -1,5 +1,5 @@
 // arnoldweb: durations that divide each other (durations.hpp).
-#include "physics/durations.hpp"
+#include "plan/durations.hpp"
 
 #include <cmath>
 

@@ -1,13 +1,13 @@
 // arnoldweb: the step-size guard (step_guard.hpp). Splitting methods resonate when
 // h omega reaches pi, omega the largest frequency of the model along a
 // trajectory (the paper's model: k |p|max, k = 2 the largest wave number of
-// the force, for z; other models: plan.cpp's model_frequency); the guard
+// the force, for z; other models: model_plan.cpp's model_frequency); the guard
 // refuses such steps and advises one at pi/2.
 #include <algorithm>
 #include <cmath>
 
 #include "arnoldweb/step_guard.hpp"
-#include "physics/durations.hpp"
+#include "plan/durations.hpp"
 
 namespace arnoldweb {
 
