@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "arnoldweb/arnoldweb.hpp"
@@ -155,6 +156,11 @@ int execute_job(const PreparedJob& prepared, bool quiet, const std::optional<Fou
   OutputOptions output = prepared.output;
   output.staging = store.staging();
   const auto files = write_job(job, result, output);
+  // an analysis's warnings (summary.json lists them too): a diffusion fit that is not diffusive
+  for (const Result& r : result.results)
+    for (const auto& [name, text] : r.analyses)
+      for (const auto& w : nlohmann::json::parse(text).value("warnings", nlohmann::json::array()))
+        std::cerr << "arnoldweb: warning: " << w.get<std::string>() << "\n";
   if (!quiet) {
     for (std::size_t k = 0; k < result.results.size(); ++k) report(job.parts[k], result.results[k]);
     for (const auto& file : files) std::cout << "wrote        " << file << "\n";

@@ -8,7 +8,9 @@
 # The cases on the default scene's physics use scenes/default_paper.toml (Yoshida-6 at
 # 0.02 T, the default scene until 2026-11-26); "sbab3c" is scenes/default.toml itself.
 # Prints one line per case and device: the digests (the map's whole, the others'
-# first 12 hex digits), max |dE|, binned count.
+# first 12 hex digits), max |dE|, binned count. The freq-*
+# cases: the FGL frequency map and the default scene's chaotic orbits, whose
+# largest terms the band's grid finds.
 #   bench/digests/digests.sh [BIN] [DEVICES...]   (default: build/arnoldweb cpu opencl:0)
 # Expression models need a device that compiles at run time (OpenCL, CUDA, or a
 # cpu backend with a host compiler); a case a device refuses prints "refused".
@@ -36,6 +38,8 @@ cases=(
   "sbab3c-expression|scenes/default.toml|;--set;model.kind=expression;--set;model.potential=\"cos(x)*cos(y)*(1 + cos(2*z))\";--set;run.average=5;--set;run.duration=5$n3000"
   "fli-grid|scenes/fli_e15.toml|;--set;ensemble.grid.nside=8;--set;run.duration=20;--set;run.average=20"
   "fli-fgl|scenes/fli_fgl.toml|;--set;ensemble.grid.resolution=[24,24];--set;run.duration=100;--set;run.average=100"
+  "freq-fgl|scenes/fgl_frequency_map.toml|;--set;ensemble.grid.resolution=[48,48]"
+  "freq-default|scenes/default_paper.toml|;--set;run.average=10.24;--set;run.duration=10.24;--set;observe.energy_error.every=1.28;--set;observe.frequencies={ samples = 128, every = 0.04 }$n3000"
 )
 # every model of the table whose potential is not written in the scene (that kind: the expression cases)
 while read -r model; do

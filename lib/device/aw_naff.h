@@ -41,6 +41,12 @@
  *   refine:  aw_naff_refine (bracket, then safeguarded Newton to round-off),
  *   further: aw_naff_subtract removes the term found (the next call finds
  *            the next largest).
+ * The kernels' form ("teams" below) shares each pass among a team, and finds
+ * an angle's largest term from its mean rate without a work buffer
+ * (aw_naff_largest_team: the maximum uphill from the mean rate where it holds
+ * most of the power, else a grid outward from it until Parseval's identity
+ * leaves no room for a higher term, then the refinement of its largest
+ * maxima).
  */
 #ifndef AW_NAFF_H
 #define AW_NAFF_H
@@ -437,13 +443,15 @@ AW_FN real aw_naff_tree(real* p) {
 }
 
 /* Members t0 .. t0 + AW_LANES - 1 (a lane each): their sums S_0, S_1, S_2
- * (re, im) at sigma, v[0 .. 5]. Their samples are loaded AW_NAFF_BATCH ahead
- * of their use: a member's pass is a chain of dependent rotations, and a GPU
- * work-item waiting for each load in turn would run at the memory's latency. */
+ * (re, im) at sigma, v[0 .. 5]; with full = 0 only S_0 (v[2 .. 5] zero: the
+ * grid of aw_naff_largest_team needs |S_0| only; S_0 the same bits). Their
+ * samples are loaded AW_NAFF_BATCH ahead of their use: a member's pass is a
+ * chain of dependent rotations, and a GPU work-item waiting for each load in
+ * turn would run at the memory's latency. */
 #ifndef AW_NAFF_BATCH
 #define AW_NAFF_BATCH 8
 #endif
-AW_FN void aw_naff_member_sums(AW_GLOBAL const real* z, aw_u64 gs, int n, int t0, real sigma, lreal* v) {
+AW_FN void aw_naff_member_sums(AW_GLOBAL const real* z, aw_u64 gs, int n, int t0, real sigma, int full, lreal* v) {
   const int chain = AW_NAFF_PADDED(n) / AW_NAFF_TEAM;
   const real centre = AW_R(0.5) * (real)(n - 1);
   /* a member's samples k = t + T i lie in groups t / G + (T / G) i at place
@@ -489,7 +497,12 @@ AW_FN void aw_naff_member_sums(AW_GLOBAL const real* z, aw_u64 gs, int n, int t0
         AW_NAFF_ROTATE(lreal, ec, es, dc, ds);
       const lreal ar = AW_FMA(zr[b], ec, -(zi[b] * es));
       const lreal ai = AW_FMA(zr[b], es, zi[b] * ec);
-      AW_NAFF_ADD_TERM(lreal, acc, ar, ai, m);
+      if (full) {
+        AW_NAFF_ADD_TERM(lreal, acc, ar, ai, m);
+      } else {
+        acc[0] = acc[0] + ar;
+        acc[1] = acc[1] + ai;
+      }
       m = m + team_time;
     }
   }
@@ -574,19 +587,19 @@ AW_FN void aw_naff_clear_padding(AW_GLOBAL real* z, aw_u64 gs, int n, aw_naff_te
 }
 
 /* One pass of the team at sigma: the sums of aw_naff_sums_at with p = 0 (the
- * samples prewindowed), in the team's order. */
-AW_FN void aw_naff_team_sums(AW_GLOBAL const real* z, aw_u64 gs, int n, real sigma, aw_naff_team team,
+ * samples prewindowed), in the team's order; S_0 only where full = 0. */
+AW_FN void aw_naff_team_sums(AW_GLOBAL const real* z, aw_u64 gs, int n, real sigma, int full, aw_naff_team team,
                              aw_naff_sums* s) {
   real v[6];
 #if AW_NAFF_TEAM_PARALLEL
-  aw_naff_member_sums(z, gs, n, team.member, sigma, v);
+  aw_naff_member_sums(z, gs, n, team.member, sigma, full, v);
   aw_naff_team_tree(team, v);
 #else
   (void)team;
   real p[6][AW_NAFF_TEAM];
   for (int t0 = 0; t0 < AW_NAFF_TEAM; t0 += AW_LANES) {
     lreal lv[6];
-    aw_naff_member_sums(z, gs, n, t0, sigma, lv);
+    aw_naff_member_sums(z, gs, n, t0, sigma, full, lv);
     for (int q = 0; q < 6; ++q) AW_STORE_LANES(lv[q], &p[q][t0]);
   }
   for (int q = 0; q < 6; ++q) v[q] = aw_naff_tree(p[q]);
@@ -594,19 +607,171 @@ AW_FN void aw_naff_team_sums(AW_GLOBAL const real* z, aw_u64 gs, int n, real sig
   aw_naff_sums_set(s, v, AW_R(1.0));
 }
 
+/* |S_0|^2 of a pass: |phi|^2 times (sum chi_p)^2. */
+AW_FN real aw_naff_team_power(const aw_naff_sums* s) { return AW_FMA(s->s0r, s->s0r, s->s0i * s->s0i); }
+
 /* aw_naff_refine's search from sigma0 with the team's passes: *freq its
- * frequency (cycles per sample; sigma0 where *ok = 0), *ok as aw_naff_refine's
- * ok. Every member of a parallel team takes the same steps (the same totals). */
+ * frequency (cycles per sample; sigma0 where *ok = 0), *power |S_0|^2 of its
+ * last pass (|phi|^2 (sum chi_p)^2), *ok as aw_naff_refine's ok. Every member
+ * of a parallel team takes the same steps (the same totals). */
 AW_FN void aw_naff_refine_team(AW_GLOBAL const real* z, aw_u64 gs, int n, real sigma0, aw_naff_team team, real* freq,
-                               int* ok) {
+                               real* power, int* ok) {
   aw_naff_search q;
   aw_naff_search_begin(&q, sigma0);
   aw_naff_sums s;
-  aw_naff_team_sums(z, gs, n, q.x, team, &s);
+  aw_naff_team_sums(z, gs, n, q.x, 1, team, &s);
   for (int it = 0; it < AW_NAFF_MAX_ITER && aw_naff_search_step(&q, &s, n); ++it)
-    aw_naff_team_sums(z, gs, n, q.x, team, &s);
+    aw_naff_team_sums(z, gs, n, q.x, 1, team, &s);
   *ok = q.done;
   *freq = q.done ? q.x : sigma0;
+  *power = aw_naff_team_power(&s);
+}
+
+/* ---------------------------------------------------------- the largest term
+ * NAFF's frequency is that of the largest term: the highest maximum of |phi|
+ * over the spectrum, not the one nearest a guess. aw_naff_largest_team finds
+ * it for the signal of an angle, z_k = chi_p(k) exp(2 pi i u_k) (modulus 1
+ * before the window), from sigma0, the angle's mean rate over the window:
+ *  1. the maximum uphill from sigma0 (aw_naff_refine_team), at sigma1, of
+ *     |phi|^2 = A^2. Where A^2 >= AW_NAFF_SURE = (4 + sqrt 7) / 8 (A >=
+ *     0.911) it is the largest term (below), and that is the answer: a
+ *     rotating angle's leading term holds nearly all of its power, and this is
+ *     the frequency, bit for bit, that the search from the mean rate alone
+ *     gave.
+ *  2. Else (a librating angle: its terms at k times the libration frequency
+ *     about the centre's rate, the largest often not the one nearest the mean
+ *     rate; a chaotic one): |phi|^2 on the grid sigma1 + j / n, j = 0, 1,
+ *     -1, 2, -2, ... (a pass per point, S_0 alone), until what the grid's
+ *     points not yet seen can hold is too little for a term above the highest
+ *     seen: by Parseval, the n points of the whole period (spacing 1/n) add
+ *     up to n sum |z_k|^2 = n sum chi_p^2 (in |S_0|^2), so the points not yet
+ *     seen hold at most R = n sum chi_p^2 - (the sum seen), and the grid
+ *     stops when R < AW_NAFF_CANDIDATE B, B the highest |S_0|^2 seen (at
+ *     sigma1 or on the grid); at most the n points. Where A^2 >=
+ *     AW_NAFF_MAIN_LOBE (0.52; AW_NAFF_MAIN_LOBE_0 = 0.655 without a
+ *     window), only j = -(p + 1) .. p + 1: a higher maximum can only lie in
+ *     the main lobe of the one found (below).
+ *  3. The grid's local maxima (its ends against their one neighbour; not
+ *     j = 0, sigma1's own) whose |S_0|^2 is at least AW_NAFF_CANDIDATE B, at
+ *     most AW_NAFF_CANDIDATES of them, largest first, each refined; the answer
+ *     is the highest of these maxima and sigma1 (the earlier of equal ones).
+ * Why these suffice: in the inner product <f, g> = sum chi_p f conj(g) /
+ * sum chi_p the signal has norm 1 and phi(sigma) = <z, e_sigma> with
+ * e_sigma(k) = exp(2 pi i sigma m_k), also of norm 1, and <e_a, e_b> =
+ * W(a - b), the window's normalised transform. Were |phi(b)| = B >= |phi(a)|
+ * = A for some b, then z = phi(b) e_b + r with |r|^2 = 1 - B^2, and A <=
+ * B |W(a - b)| + sqrt(1 - B^2), so |W(a - b)| >= A - sqrt(1 - A^2): from
+ * A^2 = (4 + sqrt 7) / 8 on that is >= 1/2, and a higher maximum could lie
+ * only where the window's transform is above half its peak, within its
+ * half-width (about a bin for the Hanning window), on the same hump, where
+ * two terms are not resolved; beyond the main lobe (p + 1 bins) |W| is at
+ * most the window's largest sidelobe (0.221 for p = 0, 0.027 for p >= 1: the
+ * Hanning window's 0.0267, less for p >= 2; measured for n = 16 to 4096),
+ * and A - sqrt(1 - A^2) exceeds it from A^2 = 0.655, 0.52 on. A lobe's peak
+ * lies within half a bin of a grid point, where the window's transform is at
+ * least 2/pi of its peak (p = 0; more for p >= 1): its nearest point has
+ * |S_0|^2 of at least (2/pi)^2 = 0.405 of the peak's, hence AW_NAFF_CANDIDATE
+ * = 0.4: a lobe higher than B among the points not seen would put more than
+ * 0.4 B there. Tested against an independent NAFF (tests/frequencies: a dense
+ * scan of the whole spectrum in long double) on librating signals, and on
+ * every cell of the FGL frequency map (docs/frequencies.md). Every member of a
+ * parallel team takes the same steps from the same totals: the same bits on
+ * every device and form. */
+#define AW_NAFF_SURE AW_R(0.8307189138830738) /* (4 + sqrt 7) / 8 */
+#define AW_NAFF_MAIN_LOBE AW_R(0.52)    /* A - sqrt(1 - A^2) > 0.027, the largest sidelobe of chi_p, p >= 1 */
+#define AW_NAFF_MAIN_LOBE_0 AW_R(0.655) /* A - sqrt(1 - A^2) > 0.221, the largest sidelobe without a window */
+#define AW_NAFF_CANDIDATE AW_R(0.4)
+#define AW_NAFF_CANDIDATES 3
+
+/* sum_k chi_p(k), k = 0..n-1: (n - 1) C(2p, p) / 2^p, and 1 more for p = 0
+ * (the mean of (1 + cos)^p over a period times the n - 1 intervals; n - 1 > p;
+ * the last sample's weight is (1 + cos pi)^p, 0 for p >= 1). sum chi_p^2 is
+ * aw_naff_window_sum(n, 2 p). */
+AW_FN real aw_naff_window_sum(int n, int p) {
+  real c = AW_R(1.0);
+  for (int i = 1; i <= p; ++i) c = c * (real)(2 * i - 1) / (real)i;
+  return c * (real)(n - 1) + ((p == 0) ? AW_R(1.0) : AW_R(0.0));
+}
+
+/* A grid maximum (sigma, |S_0|^2) into the list of the largest (at most
+ * AW_NAFF_CANDIDATES, largest first; after equal ones). */
+AW_FN void aw_naff_candidate(real* f, real* pw, int* count, real sigma, real power) {
+  int i = *count;
+  if (i == AW_NAFF_CANDIDATES) {
+    if (!(power > pw[i - 1])) return;
+    i -= 1;
+  } else {
+    *count += 1;
+  }
+  for (; i > 0 && power > pw[i - 1]; --i) {
+    f[i] = f[i - 1];
+    pw[i] = pw[i - 1];
+  }
+  f[i] = sigma;
+  pw[i] = power;
+}
+
+/* One end of the grid as it grows outward from sigma1: its last two powers
+ * (inner, outer) and the outer one's frequency. */
+typedef struct {
+  real inner, outer, sigma;
+} aw_naff_edge;
+
+/* The edge grows by a point (sigma, power): its former outer point, now
+ * between two seen ones, is a candidate where it is a local maximum (not
+ * j = 0, sigma1's own: at_centre). */
+AW_FN void aw_naff_edge_grow(aw_naff_edge* e, real sigma, real power, int at_centre, real* f, real* pw, int* count) {
+  if (!at_centre && e->outer >= e->inner && e->outer >= power) aw_naff_candidate(f, pw, count, e->sigma, e->outer);
+  e->inner = e->outer;
+  e->outer = power;
+  e->sigma = sigma;
+}
+
+/* The frequency of the largest term (cycles per sample; sigma0 where *ok = 0)
+ * of an angle's signal, prewindowed by chi_p, as the team's passes find it
+ * from the angle's mean rate sigma0 (see above). *ok = 0 where no maximum was
+ * found (the samples not finite). */
+AW_FN void aw_naff_largest_team(AW_GLOBAL const real* z, aw_u64 gs, int n, int p, real sigma0, aw_naff_team team,
+                                real* freq, int* ok) {
+  real best, best_power;
+  aw_naff_refine_team(z, gs, n, sigma0, team, &best, &best_power, ok);
+  const real weights = aw_naff_window_sum(n, p), scale = weights * weights;
+  if (!*ok || best_power >= AW_NAFF_SURE * scale) { /* the largest term, or not finite */
+    *freq = *ok ? best : sigma0;
+    return;
+  }
+  const int points = (best_power >= ((p == 0) ? AW_NAFF_MAIN_LOBE_0 : AW_NAFF_MAIN_LOBE) * scale) ? 2 * p + 3 : n;
+  const real bin = AW_R(1.0) / (real)n;
+  real unseen = (real)n * aw_naff_window_sum(n, 2 * p); /* Parseval: the grid's total |S_0|^2 */
+  real highest = best_power, f[AW_NAFF_CANDIDATES], pw[AW_NAFF_CANDIDATES];
+  int count = 0;
+  aw_naff_edge left = {AW_R(-1.0), AW_R(-1.0), best}, right = left;
+  for (int s = 0; s < points; ++s) {
+    const int j = (s & 1) ? (s + 1) / 2 : -(s / 2); /* 0, 1, -1, 2, -2, ... */
+    const real sigma = AW_FMA((real)j, bin, best);
+    aw_naff_sums q;
+    aw_naff_team_sums(z, gs, n, sigma, 0, team, &q);
+    const real power = aw_naff_team_power(&q);
+    unseen = unseen - power;
+    highest = (power > highest) ? power : highest;
+    if (j > 0 || s == 0) aw_naff_edge_grow(&right, sigma, power, j == 1, f, pw, &count);
+    if (j < 0 || s == 0) aw_naff_edge_grow(&left, sigma, power, j == -1, f, pw, &count);
+    if (unseen < AW_NAFF_CANDIDATE * highest) break;
+  }
+  /* the ends, against their one inner neighbour */
+  if (right.outer >= right.inner && right.sigma != best) aw_naff_candidate(f, pw, &count, right.sigma, right.outer);
+  if (left.outer >= left.inner && left.sigma != best) aw_naff_candidate(f, pw, &count, left.sigma, left.outer);
+  for (int i = 0; i < count; ++i) {
+    if (!(pw[i] >= AW_NAFF_CANDIDATE * highest)) break;
+    real g, power;
+    int good;
+    aw_naff_refine_team(z, gs, n, f[i], team, &g, &power, &good);
+    if (good && power > best_power) {
+      best = g;
+      best_power = power;
+    }
+  }
+  *freq = best;
 }
 
 #endif /* AW_NAFF_H */

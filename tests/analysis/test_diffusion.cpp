@@ -1,13 +1,19 @@
 // The diffusion estimator (arnoldweb/diffusion.hpp): a synthetic random walk
 // of known D is recovered within its bootstrap error bar, and the error bar
 // is honest over many seeds (coverage); a drift without diffusion gives D = 0;
-// ballistic spreading shows in the half-range slopes; the moments of a tiny
-// ensemble by hand; degenerate inputs are clear errors; the bootstrap is
-// reproducible.
+// ballistic spreading shows in the half-range slopes; the growth's linearity
+// (the exponent alpha of Var ~ t^alpha) passes linear growth and flags
+// t^0.5 and t^2, in the fit, summary.json, diffusion.csv and on stderr; the
+// moments of a tiny ensemble by hand; degenerate inputs are clear errors; the
+// bootstrap is reproducible.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <functional>
+#include <nlohmann/json.hpp>
+#include <sstream>
 #include <limits>
 #include <random>
 #include <stdexcept>
@@ -15,6 +21,7 @@
 #include <vector>
 
 #include "arnoldweb/diffusion.hpp"
+#include "support.hpp"
 
 using namespace arnoldweb;
 
@@ -55,6 +62,31 @@ ActionSamples random_walks(std::size_t n, std::size_t times, double dt, double d
 }
 
 const std::vector<double> kAlong = {1, 1, 0}, kAcross = {1, -1, 0};
+
+// n trajectories whose displacement along (1, 1, 0)/sqrt 2 is x_i (t - t0)^(alpha / 2) plus a
+// random walk of diffusion coefficient d (x of variance 1e-6), at times t0, t0 + 10, ...: the
+// variance grows like (t - t0)^alpha (and 2 d t).
+ActionSamples power_growth(double alpha, double d, std::size_t n, std::size_t times, double t0, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> gauss;
+  ActionSamples s;
+  s.trajectories = n;
+  s.times = times;
+  s.dim = 3;
+  s.t.push_back(t0);
+  for (std::size_t k = 1; k < times; ++k) s.t.push_back(t0 + 10.0 * k);
+  const double r = 1 / std::sqrt(2.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = 1e-3 * gauss(rng);
+    double walk = 0;
+    for (std::size_t k = 0; k < times; ++k) {
+      if (k > 0) walk += std::sqrt(2 * d * 10.0) * gauss(rng);
+      const double a = x * std::pow(s.t[k] - t0, alpha / 2) + walk;
+      s.actions.insert(s.actions.end(), {0.3 + r * a, 0.3 + r * a, 0.0});
+    }
+  }
+  return s;
+}
 
 bool throws_with(const std::function<void()>& f, const std::string& part) {
   try {
@@ -145,6 +177,67 @@ TEST_SUITE("diffusion") {
     const DiffusionFit b = fit_diffusion(s, {1, 0});
     MESSAGE("ballistic: slopes " << b.slope_first_half << " then " << b.slope_second_half);
     CHECK(b.slope_second_half > 2 * b.slope_first_half);
+  }
+
+  TEST_CASE("the growth's linearity: linear growth is diffusive, t^0.5 and t^2 are not") {
+    // random walks: Var = 2 D t
+    const DiffusionFit walk = fit_diffusion(random_walks(500, 41, 1.0, 2.5e-3, 1e-4, 0.0, 7), kAlong);
+    MESSAGE("random walks: alpha = " << walk.alpha << " +- " << walk.alpha_error << ", D of the halves "
+                                     << walk.D_first_half << ", " << walk.D_second_half);
+    CHECK(std::fabs(walk.alpha - 1) < 3 * walk.alpha_error);
+    CHECK(walk.alpha_error > 0);
+    CHECK(walk.alpha_error < 0.2);
+    CHECK(walk.diffusive);
+    CHECK(walk.D_first_half == walk.slope_first_half / 2);
+    CHECK(walk.D_second_half == walk.slope_second_half / 2);
+    // t^alpha from a later start (a continued run): the exponent from the first sample time
+    for (const double alpha : {0.5, 1.0, 2.0}) {
+      CAPTURE(alpha);
+      DiffusionOptions o;
+      o.t_min = 1000 + 100;
+      const DiffusionFit f = fit_diffusion(power_growth(alpha, 1e-12, 400, 101, 1000.0, 3), kAlong, o);
+      MESSAGE("Var ~ t^" << alpha << ": alpha = " << f.alpha << " +- " << f.alpha_error << ", D of the halves "
+                         << f.D_first_half << ", " << f.D_second_half << ", diffusive " << f.diffusive);
+      CHECK(std::fabs(f.alpha - alpha) < 0.05);
+      CHECK(f.diffusive == (alpha == 1.0));
+    }
+    // a variance that does not grow: no exponent, not diffusive
+    const DiffusionFit flat = fit_diffusion(power_growth(0.0, 0.0, 100, 21, 0.0, 5), kAlong);
+    CHECK(std::isnan(flat.alpha));
+    CHECK_FALSE(flat.diffusive);
+  }
+
+  TEST_CASE("a run whose variance does not grow linearly: the warning in summary.json, on stderr, and the "
+            "linearity in diffusion.csv") {
+    // the D(eps) scene at eps = 0 (integrable): the actions do not move, the variance stays 0
+    const std::string dir = awtest::temp_dir("diffusion-warning");
+    std::string out;
+    REQUIRE(awtest::run_cli({"run", std::string(ARNOLDWEB_SOURCE_DIR) + "/scenes/fgl_diffusion.toml", "--quiet",
+                             "--device", "cpu", "--out", dir + "/out", "--set", "model.epsilon=0",
+                             "--set", "ensemble.grid.resolution=[4,4]", "--set", "run.duration=20.48", "--set",
+                             "run.average=20.48", "--set", "observe.energy_error.every=1.28", "--set",
+                             "observe.diffusion={ every = 1.28, along = [1, 1, 0], across = [1, -1, 0], fit_from = 2.56 }",
+                             "--set", "output.images=false"},
+                            &out) == 0);
+    CHECK(out.find("arnoldweb: warning: observe.diffusion: the variance along the resonance does not grow") !=
+          std::string::npos);
+    std::ifstream in(dir + "/out/summary.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    const nlohmann::json& fit = j["analyses"]["diffusion"]["along_fit"];
+    CHECK(fit["alpha"].is_null());
+    CHECK(fit["diffusive"] == false);
+    bool listed = false;
+    for (const auto& w : j["warnings"]) listed = listed || w.get<std::string>().find("not diffusive") != std::string::npos;
+    CHECK(listed);
+    std::ifstream csv(dir + "/out/diffusion.csv");
+    std::string header;
+    std::getline(csv, header);
+    CHECK(header == "t,along_mean,along_variance,across_variance,along_D,along_D_error,along_D_first_half,"
+                    "along_D_second_half,along_alpha,along_alpha_error,across_D,across_D_error,across_D_first_half,"
+                    "across_D_second_half,across_alpha,across_alpha_error");
+    std::string row;
+    std::getline(csv, row);
+    CHECK(std::count(row.begin(), row.end(), ',') == 15);
   }
 
   TEST_CASE("the moments of a tiny ensemble, by hand") {

@@ -36,8 +36,45 @@ Signal make_signal(std::mt19937_64& rng, int n, int padded, int p, Window window
   return s;
 }
 
+// An angle that librates about a centre moving at `rate` (cycles per sample):
+// u_k = rate k + a sin(2 pi f k + phase) + b sin(4 pi f k + phase2) turns, its
+// signal exp(2 pi i u_k) (the raw samples, `raw`, re and im in turn) and the
+// same prewindowed as the analysis reads it (`z`); `start` the mean rate over
+// the window, as the sampler gives it, less its whole cycles. The terms lie at
+// rate + k f with amplitudes near J_k(2 pi a): for 2 pi a > 1.44 the largest
+// is not the one at the centre, nearest the mean rate.
+struct Libration {
+  double rate, a, f, phase, b, phase2;
+};
+template <class Window>
+Signal make_libration(const Libration& l, int n, int padded, int p, Window window, std::vector<double>* raw) {
+  Signal s;
+  s.z.assign(2 * static_cast<std::size_t>(padded), 0.0);
+  raw->assign(2 * static_cast<std::size_t>(n), 0.0);
+  const long double two_pi = 6.283185307179586476925286766559005768L;
+  auto u = [&](int k) {
+    return l.rate * k + l.a * std::sin(static_cast<double>(two_pi * l.f * k) + l.phase) +
+           l.b * std::sin(static_cast<double>(2 * two_pi * l.f * k) + l.phase2);
+  };
+  for (int k = 0; k < n; ++k) {
+    const double turns = u(k) - std::floor(u(k));
+    const double c = static_cast<double>(std::cos(two_pi * turns)), sn = static_cast<double>(std::sin(two_pi * turns));
+    (*raw)[2 * static_cast<std::size_t>(k)] = c;
+    (*raw)[2 * static_cast<std::size_t>(k) + 1] = sn;
+    const double w = window(k, n, p);
+    s.z[2 * static_cast<std::size_t>(k)] = w * c;
+    s.z[2 * static_cast<std::size_t>(k) + 1] = w * sn;
+  }
+  const double mean_rate = (u(n - 1) - u(0)) / (n - 1);
+  s.start = mean_rate - std::nearbyint(mean_rate);
+  s.sigma = NAN;
+  return s;
+}
+
 // The team refinement with one lane (test_naff_team_one_lane.cpp): the
-// kernels' GPU form of a member, here every member in turn.
+// kernels' GPU form of a member, here every member in turn; and the search
+// for the largest term (aw_naff_largest_team) in the same form.
 void refine_one_lane(const double* z, int n, double sigma0, double* freq, int* ok);
+void largest_one_lane(const double* z, int n, int p, double sigma0, double* freq, int* ok);
 
 }  // namespace naff_team_test

@@ -6,7 +6,8 @@
 //    between the windows;
 //  - a rotating pendulum (fourier, one harmonic) against its frequency from
 //    quadrature: the error falls with the window's length as Laskar's
-//    Hanning window promises;
+//    Hanning window promises; a librating one: the largest term at its
+//    libration frequency (not at the mean rate), in both windows;
 //  - the records are the same bits with and without time slices of the
 //    diffusion sampling, and on every backend (the parity suite's digests);
 //  - the diffusion analysis: the sampled actions, their moments and D.
@@ -64,10 +65,13 @@ double pendulum_frequency(double c, double p0) {
   return kTwoPi / period;
 }
 
-// The pendulum in x (c = 0.5), free motion in y and z; momenta p0 = 1.3 .. 1.9 in x.
-Scene pendulum_scene(int samples) {
+// The pendulum in x (c = 0.5), free motion in y and z; momenta p0 = 1.3 .. 1.9 in x from x = 0
+// (its top): rotations; `sets` change that.
+Scene pendulum_scene(int samples, std::vector<std::string> sets = {}) {
   const double every = 0.05;
   const double duration = 2 * samples * every;
+  sets.insert(sets.begin(), {awtest::set("run.duration", duration), awtest::set("run.average", duration),
+                             "observe.frequencies={ samples = " + std::to_string(samples) + ", every = 0.05, window = 1 }"});
   return awtest::scene_from(R"(
     [model]
     kind = "fourier"
@@ -82,9 +86,28 @@ Scene pendulum_scene(int samples) {
     [observe]
     velocity_map = false
     energy_error = { every = 0.05 }
-  )", {awtest::set("run.duration", duration), awtest::set("run.average", duration),
-       "observe.frequencies={ samples = " + std::to_string(samples) + ", every = 0.05, window = 1 }"},
-      "<pendulum>");
+  )", sets, "<pendulum>");
+}
+
+// The libration frequency of the same pendulum about x = pi from there with momentum p0 < 2 sqrt c,
+// in turns per T: sqrt(c) pi / (2 K(k)), k = p0 / (2 sqrt c) = sin(amplitude / 2), K by the
+// arithmetic-geometric mean (K(k) = pi / (2 AGM(1, sqrt(1 - k^2)))).
+double libration_frequency(double c, double p0) {
+  const double k = p0 / (2 * std::sqrt(c));
+  double a = 1, b = std::sqrt(1 - k * k);
+  for (int i = 0; i < 40; ++i) {
+    const double m = (a + b) / 2;
+    b = std::sqrt(a * b);
+    a = m;
+  }
+  return std::sqrt(c) * a;  // sqrt(c) pi / (2 K) = sqrt(c) AGM
+}
+
+// The pendulum librating about x = pi (its bottom; the position in radians): p0 = 1.0, 1.1, 1.2, 1.3
+// (amplitudes 1.57 to 2.35 radians), 1024 samples every 0.05 T (26 to 31 librations a window).
+Scene libration_scene() {
+  return pendulum_scene(1024, {"ensemble.grid.range1=[0.95, 1.35]",
+                               "ensemble.grid.position=[3.141592653589793, 0.0, 0.0]"});
 }
 
 }  // namespace
@@ -181,6 +204,38 @@ TEST_SUITE("frequency-runs") {
     }
   }
 
+  // e^{2 pi i u} of the libration has its terms at k f (f the libration frequency), the
+  // largest at k = +-1 for these amplitudes (J_1 > J_0 from 1.44 radians on), the one nearest the
+  // mean rate (0) at k = 0: NAFF's frequency is |nu| = f, where the search from the mean rate
+  // alone found the term at 0. The +f and -f terms are equally large (a symmetric libration):
+  // which is the larger changes with the window, and the index compares |nu|.
+  TEST_CASE("a librating pendulum: the largest term at the libration frequency of quadrature, |nu| in both "
+            "windows, a small index") {
+    const double c = 0.5;
+    for (const auto& device : awtest::devices_under_test()) {
+      CAPTURE(device.id);
+      const Result r = awtest::run_on(device.id, make_plan(libration_scene()));
+      int flips = 0;
+      for (int i = 0; i < 4; ++i) {
+        const double p0 = 0.95 + (i + 0.5) * 0.1, f = libration_frequency(c, p0);
+        const double* rec = &r.reals("frequencies")[static_cast<std::size_t>(i) * AW_FREQ_REALS];
+        CAPTURE(p0);
+        CAPTURE(f);
+        MESSAGE("p0 " << p0 << ": nu " << rec[0] << ", " << rec[3] << ", |nu| - f " << std::fabs(rec[0]) - f << ", "
+                      << std::fabs(rec[3]) - f << "; index " << std::log10(rec[6]));
+        // the window's leakage from the other terms (0, +-2f, ...): 1e-7 to 1e-6 turns per T, growing
+        // towards the separatrix; the term at 0 that the mean rate's search found is f away
+        CHECK(std::fabs(std::fabs(rec[0]) - f) < 3e-6);
+        CHECK(std::fabs(std::fabs(rec[3]) - f) < 3e-6);
+        CHECK(std::fabs(rec[1] - 0.4) < 1e-10);  // free motion in y and z
+        CHECK(std::fabs(rec[2] - 0.7) < 1e-10);
+        CHECK(rec[6] < 1e-5);                    // regular: the index compares |nu|
+        flips += (rec[0] > 0) != (rec[3] > 0) ? 1 : 0;
+      }
+      CHECK(flips > 0);  // the sign did change between the windows: nu itself would give an index of log10 2f
+    }
+  }
+
   TEST_CASE("float runs find the double run's frequencies to float accuracy") {
     const auto& device = awtest::devices_under_test().front();
     CAPTURE(device.id);
@@ -225,8 +280,8 @@ TEST_SUITE("frequency-runs") {
   // bit for bit. OpenCL devices run every form: eight lanes (a CPU's), one lane
   // (ARNOLDWEB_OPENCL_LANES=1), and the teams of work-items a GPU runs
   // (ARNOLDWEB_OPENCL_TEAMS=1 with one lane).
-  TEST_CASE("frequencies of chaotic orbits: every device and lane width gives the cpu backend's bits") {
-    const Plan plan = make_plan(awtest::scene_from(R"(
+  TEST_CASE("frequencies of chaotic and librating orbits: every device and lane width gives the cpu backend's bits") {
+    const Plan chaotic = make_plan(awtest::scene_from(R"(
       [model]
       energy = 15.0
       [ensemble]
@@ -242,12 +297,15 @@ TEST_SUITE("frequency-runs") {
       velocity_map = { nside = 4 }
       frequencies = { samples = 128, every = 0.04 }
     )", {}, "<frequency-runs>"));
-    const Result ref = awtest::run_on("cpu", plan);
+    const Result ref = awtest::run_on("cpu", chaotic);
     const std::vector<double> f = ref.reals("frequencies");
     REQUIRE(f.size() == 300 * AW_FREQ_REALS);
     int finite = 0;
     for (double v : f) finite += std::isfinite(v) ? 1 : 0;
     CHECK(finite > 250 * AW_FREQ_REALS);  // most orbits give every frequency
+    // and librating orbits, whose largest terms the grid over their band finds
+    const Plan libration = make_plan(libration_scene());
+    const std::vector<double> lf = awtest::run_on("cpu", libration).reals("frequencies");
     struct Form {
       const char *lanes, *teams;
     };
@@ -259,10 +317,11 @@ TEST_SUITE("frequency-runs") {
         CAPTURE(form.teams);
         if (*form.lanes) ::setenv("ARNOLDWEB_OPENCL_LANES", form.lanes, 1);
         if (*form.teams) ::setenv("ARNOLDWEB_OPENCL_TEAMS", form.teams, 1);
-        const Result r = awtest::run_on(device.id, plan);
+        const Result r = awtest::run_on(device.id, chaotic), l = awtest::run_on(device.id, libration);
         ::unsetenv("ARNOLDWEB_OPENCL_LANES");
         ::unsetenv("ARNOLDWEB_OPENCL_TEAMS");
         CHECK(awtest::first_difference(r.reals("frequencies"), f) == -1);
+        CHECK(awtest::first_difference(l.reals("frequencies"), lf) == -1);
       }
     }
   }

@@ -18,7 +18,12 @@ namespace naff_one_lane {
 namespace naff_team_test {
 void refine_one_lane(const double* z, int n, double sigma0, double* freq, int* ok) {
   const naff_one_lane::aw_naff_team team = {0, nullptr};
-  naff_one_lane::aw_naff_refine_team(z, 2 * AW_NAFF_GROUP, n, sigma0, team, freq, ok);
+  double power;
+  naff_one_lane::aw_naff_refine_team(z, 2 * AW_NAFF_GROUP, n, sigma0, team, freq, &power, ok);
+}
+void largest_one_lane(const double* z, int n, int p, double sigma0, double* freq, int* ok) {
+  const naff_one_lane::aw_naff_team team = {0, nullptr};
+  naff_one_lane::aw_naff_largest_team(z, 2 * AW_NAFF_GROUP, n, p, sigma0, team, freq, ok);
 }
 }  // namespace naff_team_test
 

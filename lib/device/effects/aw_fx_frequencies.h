@@ -31,13 +31,13 @@
  * Kept apart, the integration kernel carries none of the analysis's registers
  * and the analysis runs at its own occupancy (its passes over the samples are
  * bound by memory; docs/frequencies.md, "What the frequencies cost").
- * The mean rate gives the refinement its start, and says which alias of the
- * sampled frequency is the true one: the frequency in turns per T is
- * (sigma + round(rate)) / every, for any speed.
+ * The mean rate gives the search for the largest term its start, and says
+ * which alias of the sampled frequency is the true one: the frequency in
+ * turns per T is (sigma + round(rate)) / every, for any speed.
  * The record (AW_OUT_FREQUENCIES, AW_FREQ_REALS reals): the three frequencies
- * of the first window, those of the second, and |nu(2) - nu(1)| (the host
- * writes its log10, the diffusion index); NaN where the trajectory was
- * flagged, or the refinement found no maximum. */
+ * of the first window, those of the second, and ||nu(2)| - |nu(1)|| (the
+ * host writes its log10, the diffusion index); NaN where the trajectory was
+ * flagged, or the search found no maximum. */
 #ifndef AW_FX_FREQUENCIES_H
 #define AW_FX_FREQUENCIES_H
 
@@ -141,9 +141,10 @@ AW_FN void aw_freq_sample(const aw_lstate* s, const int* status, int k, aw_lanes
 }
 
 /* The frequency (turns per T) of signal g = 3 w + d (window w, angle d) of
- * record rec, refined by the team from its mean rate: the rate's whole cycles
- * per sample say which alias of the sampled frequency is the true one, the
- * rest is the start. NaN where no maximum was found. */
+ * record rec: that of its largest term, found by the team from its mean rate
+ * (aw_naff_largest_team): the rate's whole cycles per sample say which alias
+ * of the sampled frequency is the true one, the rest is the start. NaN where
+ * no maximum was found. */
 AW_FN real aw_freq_signal(AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip, aw_outputs out, aw_u64 rec, int g,
                           aw_naff_team team) {
   const real rate = *aw_series_tail(out, ip, rec, AW_FREQ_TAIL_RATE(g));
@@ -152,23 +153,33 @@ AW_FN real aw_freq_signal(AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip
   int ok;
   AW_GLOBAL real* z = aw_series_sample(out, ip, rec, g, 0);
   aw_naff_clear_padding(z, AW_FREQ_GROUP_STRIDE, (int)ip->frequency_samples, team);
-  aw_naff_refine_team(z, AW_FREQ_GROUP_STRIDE, (int)ip->frequency_samples, rate - whole, team, &f, &ok);
+  aw_naff_largest_team(z, AW_FREQ_GROUP_STRIDE, (int)ip->frequency_samples, (int)ip->frequency_order, rate - whole,
+                       team, &f, &ok);
   return ok ? (f + whole) / rp->frequency_every : aw_nan_real();
 }
 
 /* The analysis of record rec: its six frequencies and the record
- * (AW_OUT_FREQUENCIES); written by member 0 of a parallel team. */
+ * (AW_OUT_FREQUENCIES); written by member 0 of a parallel team. The index
+ * compares |nu|: a librating angle's largest term is one of a pair +-k f
+ * about the centre's rate 0 of nearly equal amplitudes, either of which can be
+ * the larger in a window (docs/frequencies.md); a rotating angle keeps its
+ * sign, and its |nu(2)| - |nu(1)| is +-(nu(2) - nu(1)), the same square. */
 AW_FN void aw_freq_analyse_record(aw_u64 rec, aw_naff_team team, AW_CONSTANT aw_rparams* rp,
                                   AW_CONSTANT aw_iparams* ip, aw_outputs out) {
+  const real nan = aw_nan_real();
+  AW_GLOBAL real* r = aw_record_r(out, ip, AW_OUT_FREQUENCIES, rec);
+  if (*aw_series_tail(out, ip, rec, AW_FREQ_TAIL_FINE) == AW_R(0.0)) { /* flagged: no analysis */
+    if (team.member == 0)
+      for (int d = 0; d < AW_FREQ_REALS; ++d) r[d] = nan;
+    return;
+  }
   real nu[6];
   for (int g = 0; g < 6; ++g) nu[g] = aw_freq_signal(rp, ip, out, rec, g, team);
   if (team.member != 0) return;
-  const real nan = aw_nan_real();
-  const int fine = *aw_series_tail(out, ip, rec, AW_FREQ_TAIL_FINE) != AW_R(0.0);
-  AW_GLOBAL real* r = aw_record_r(out, ip, AW_OUT_FREQUENCIES, rec);
-  const real dx = nu[3] - nu[0], dy = nu[4] - nu[1], dz = nu[5] - nu[2];
-  for (int d = 0; d < 6; ++d) r[d] = fine ? nu[d] : nan;
-  r[6] = fine ? AW_SQRT(AW_FMA(dz, dz, AW_FMA(dy, dy, dx * dx))) : nan;
+  const real dx = AW_FABS(nu[3]) - AW_FABS(nu[0]), dy = AW_FABS(nu[4]) - AW_FABS(nu[1]),
+             dz = AW_FABS(nu[5]) - AW_FABS(nu[2]);
+  for (int d = 0; d < 6; ++d) r[d] = nu[d];
+  r[6] = AW_SQRT(AW_FMA(dz, dz, AW_FMA(dy, dy, dx * dx)));
 }
 
 #if !AW_NAFF_TEAM_PARALLEL

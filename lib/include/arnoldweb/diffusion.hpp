@@ -69,16 +69,33 @@ struct DiffusionOptions {
   int replicates = 200;   // bootstrap resamplings (0: no error bar)
   std::uint64_t seed = 26;
 };
+inline constexpr double kDiffusiveExponent = 0.2;  // |alpha - 1| allowed beyond twice its error (DiffusionFit)
 struct DiffusionFit {
   double D = 0;                   // slope / 2
   double slope = 0, intercept = 0;  // of sigma^2(t) (action^2 / T, action^2)
   double drift = 0;               // d<e . dI>/dt by least squares over the same times (action / T)
   double D_error = 0;             // standard deviation of the bootstrap D's (0 without replicates)
   double D_low = 0, D_high = 0;   // their 16th and 84th percentiles (a 68% interval)
-  // The slopes of the first and second half of the fitted times: about equal
-  // for normal diffusion; a ratio > 1 signals ballistic spreading (different
-  // drifts, sigma^2 ~ t^2), < 1 saturation or subdiffusion.
+  // The slopes of the first and second half of the fitted times (sharing the
+  // middle time): about equal for normal diffusion; a ratio > 1 signals
+  // ballistic spreading (different drifts, sigma^2 ~ t^2), < 1 saturation or
+  // subdiffusion. D_first_half, D_second_half: half of each.
   double slope_first_half = 0, slope_second_half = 0;
+  double D_first_half = 0, D_second_half = 0;
+  // The growth's exponent alpha of sigma^2 - sigma_0^2 ~ (t - t_0)^alpha (t_0
+  // the first sample time, where the displacements start), from the halves'
+  // slopes s1, s2 and the mean times c1, c2 of the halves:
+  //     alpha = 1 + ln(s2 / s1) / ln((c2 - t_0) / (c1 - t_0))
+  // (a least-squares slope over a half is the curve's derivative near the
+  // half's mean time, alpha K (c - t_0)^(alpha - 1), free of the intercept;
+  // exact for alpha = 1 and 2). NaN where a half's slope is not positive (the
+  // variance does not grow there) or fewer than 3 times are fitted.
+  // alpha_error: the standard deviation of the bootstrap's alphas (those that
+  // are finite; 0 without replicates). diffusive: alpha is finite and
+  // |alpha - 1| <= kDiffusiveExponent + 2 alpha_error, the growth linear
+  // within 20 % in its exponent (docs/frequencies.md).
+  double alpha = 0, alpha_error = 0;
+  bool diffusive = false;
   std::size_t first = 0, last = 0;  // sample indices of the fitted range (inclusive)
   std::size_t used = 0, excluded = 0;
   int replicates = 0;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -140,6 +141,43 @@ std::vector<double> weighted_variance(const std::vector<double>& q, const std::v
   return var;
 }
 
+// The mean of t over [first, last].
+double mean_time(const std::vector<double>& t, std::size_t first, std::size_t last) {
+  double m = 0;
+  for (std::size_t k = first; k <= last; ++k) m += t[k];
+  return m / static_cast<double>(last - first + 1);
+}
+
+// The two halves of the fitted times [first, mid], [mid, last] and their mean
+// times from t0 (DiffusionFit::alpha); none (mid == first) below 3 times.
+struct Halves {
+  std::size_t first, mid, last;
+  double c1, c2;
+  Halves(const std::vector<double>& t, std::size_t f, std::size_t l)
+      : first(f), mid(f + (l - f) / 2), last(l), c1(mean_time(t, f, mid) - t[0]), c2(mean_time(t, mid, l) - t[0]) {}
+  bool split() const { return mid > first && last > mid; }
+  // the slopes of the halves of y (the whole range's where there are no halves)
+  void slopes(const std::vector<double>& t, const std::vector<double>& y, double whole, double* s1, double* s2) const {
+    *s1 = split() ? slope_of(t, y, first, mid) : whole;
+    *s2 = split() ? slope_of(t, y, mid, last) : whole;
+  }
+  double exponent(double s1, double s2) const {
+    if (!split() || !(s1 > 0 && s2 > 0) || !(c1 > 0 && c2 > c1)) return std::numeric_limits<double>::quiet_NaN();
+    return 1 + std::log(s2 / s1) / std::log(c2 / c1);
+  }
+};
+
+// The sample standard deviation (0 for fewer than 2 values).
+double standard_deviation(const std::vector<double>& v) {
+  if (v.size() < 2) return 0;
+  double m = 0;
+  for (double x : v) m += x;
+  m /= static_cast<double>(v.size());
+  double s = 0;
+  for (double x : v) s += (x - m) * (x - m);
+  return std::sqrt(s / static_cast<double>(v.size() - 1));
+}
+
 double percentile(std::vector<double> v, double q) {
   std::sort(v.begin(), v.end());
   const double pos = q * static_cast<double>(v.size() - 1);
@@ -254,13 +292,15 @@ DiffusionFit fit_diffusion(const ActionSamples& s, const std::vector<double>& di
   line_fit(s.t, var, first, last, &fit.slope, &fit.intercept);
   fit.D = fit.slope / 2;
   fit.drift = slope_of(s.t, mean, first, last);
-  const std::size_t mid = first + (last - first) / 2;
-  fit.slope_first_half = (mid > first) ? slope_of(s.t, var, first, mid) : fit.slope;
-  fit.slope_second_half = (last > mid) ? slope_of(s.t, var, mid, last) : fit.slope;
+  const Halves halves(s.t, first, last);
+  halves.slopes(s.t, var, fit.slope, &fit.slope_first_half, &fit.slope_second_half);
+  fit.D_first_half = fit.slope_first_half / 2;
+  fit.D_second_half = fit.slope_second_half / 2;
+  fit.alpha = halves.exponent(fit.slope_first_half, fit.slope_second_half);
   if (o.replicates > 0) {
     // replicate r draws from its own stream (seed, r): the replicates run in parallel and
     // give the same bits whatever the number of threads
-    std::vector<double> ds(static_cast<std::size_t>(o.replicates));
+    std::vector<double> ds(static_cast<std::size_t>(o.replicates)), alphas(ds.size());
 #pragma omp parallel
     {
       std::vector<std::uint32_t> count(n);
@@ -270,19 +310,22 @@ DiffusionFit fit_diffusion(const ActionSamples& s, const std::vector<double>& di
         SplitMix rng{seeder.next()};
         std::fill(count.begin(), count.end(), 0u);
         for (std::size_t j = 0; j < n; ++j) ++count[rng.below(n)];
-        ds[static_cast<std::size_t>(r)] =
-            slope_of(s.t, weighted_variance(q, count, n, times, first, last), first, last) / 2;
+        const std::vector<double> v = weighted_variance(q, count, n, times, first, last);
+        const double slope = slope_of(s.t, v, first, last);
+        double s1, s2;
+        halves.slopes(s.t, v, slope, &s1, &s2);
+        ds[static_cast<std::size_t>(r)] = slope / 2;
+        alphas[static_cast<std::size_t>(r)] = halves.exponent(s1, s2);
       }
     }
-    double m = 0;
-    for (double x : ds) m += x;
-    m /= static_cast<double>(ds.size());
-    double v = 0;
-    for (double x : ds) v += (x - m) * (x - m);
-    fit.D_error = ds.size() > 1 ? std::sqrt(v / static_cast<double>(ds.size() - 1)) : 0;
+    fit.D_error = standard_deviation(ds);
     fit.D_low = percentile(ds, 0.16);
     fit.D_high = percentile(ds, 0.84);
+    alphas.erase(std::remove_if(alphas.begin(), alphas.end(), [](double a) { return !std::isfinite(a); }),
+                 alphas.end());
+    fit.alpha_error = standard_deviation(alphas);
   }
+  fit.diffusive = std::isfinite(fit.alpha) && std::fabs(fit.alpha - 1) <= kDiffusiveExponent + 2 * fit.alpha_error;
   return fit;
 }
 

@@ -94,7 +94,11 @@ std::string summary_json(const Plan& plan, const Result& r, const std::vector<st
                {"ordering", "RING"},
                {"frames", plan.frames},
                {"zoom_resolution", plan.zoom_resolution}};
-  for (const auto& [name, text] : r.analyses) j["analyses"][name] = json::parse(text);
+  for (const auto& [name, text] : r.analyses) {
+    j["analyses"][name] = json::parse(text);
+    // an analysis's warnings (a diffusion fit that is not diffusive) beside the plan's
+    for (const json& w : j["analyses"][name].value("warnings", json::array())) j["warnings"].push_back(w);
+  }
   j["time"] = {{"start", plan.start_time()}, {"end", plan.start_time() + plan.scene.duration}, {"unit", "T"}};
   j["scene"] = json::parse(plan.scene.to_json());  // every key, from the key table
   j["scene_toml"] = plan.scene.to_toml();

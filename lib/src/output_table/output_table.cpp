@@ -39,10 +39,10 @@ const std::vector<RecordOutput>& record_outputs() {
          "Mean MEGNO <Y> of every trajectory (2 on regular orbits, growing as lambda t / 2 on chaotic ones) and the "
          "Lyapunov exponent from its slope."}}},
       {"frequencies", AW_OUT_FREQUENCIES, AW_F_FREQUENCIES, fixed(AW_FREQ_REALS), fixed(0), "frequencies.h5", "", true,
-       {{"nu_first", false, 0, 3, "the leading frequency of each angle (x, y, z) over the first window, turns per T; "
+       {{"nu_first", false, 0, 3, "the frequency of the largest term of each angle (x, y, z) over the first window, turns per T; "
                                   "NaN: trajectory flagged, or no maximum found"},
         {"nu_second", false, 3, 3, "the same over the second window"},
-        {"diffusion_index", false, 6, 1, "log10 |nu_second - nu_first| (Laskar's diffusion index; -inf: no change)", 0,
+        {"diffusion_index", false, 6, 1, "log10 || |nu_second| - |nu_first| || (Laskar's diffusion index; -inf: no change)", 0,
          false, true}},
        "the leading frequency of every angle over two consecutive windows and the diffusion index "
        "(observe.frequencies, NAFF; docs/frequencies.md)",

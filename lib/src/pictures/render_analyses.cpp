@@ -6,7 +6,9 @@
 //                     that the chaotic layers of the resonances stand out.
 //  diffusion_index.png the index over the grid of initial conditions.
 //  diffusion.png      Var[e . dI](t) along and across the resonance with the
-//                     fitted line sigma0^2 + 2 D t and D with its error bar.
+//                     fitted line sigma0^2 + 2 D t, D with its error bar, and
+//                     the growth's linearity: the halves' D, the exponent
+//                     alpha (in red where the fit is not diffusive).
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -100,7 +102,7 @@ void render_frequency_map(const Plan& plan, const Result& r, const Records& rec,
     return raster[static_cast<std::size_t>(j) * side + static_cast<std::size_t>(i)];
   });
   frame(c, x0, y0, side, side, rx, ry, "nu_x (turns per T, first window)", "nu_y (turns per T, first window)");
-  linear_bar(c, x0 + (side - 500) / 2.0, y0 + side + 80, 500, 16, scale, "diffusion index log10 |nu(2) - nu(1)|");
+  linear_bar(c, x0 + (side - 500) / 2.0, y0 + side + 80, 500, 16, scale, "diffusion index log10 ||nu(2)| - |nu(1)||");
   c.text(20, 28, "frequency map   " + picture_title(plan), 15);
   c.text(20, h - 12, picture_caption(r), 11, 0.7, 0.7, 0.7);
   c.save(path);
@@ -152,6 +154,16 @@ void diffusion_panel(Canvas& c, double x0, double y0, double w, double h, const 
   cairo_restore(c.cr());
   c.text(x0 + 10, y0 + 20, "D = " + fmt(number(f["D"])) + " +- " + fmt(number(f["D_error"])) + "  (fit from t = " +
                                fmt(t0) + ")", 12, 0.4, 0.8, 1.0);
+  // the linearity of the growth: the halves' D and the exponent of Var - sigma0^2 ~ t^alpha
+  const double alpha = number(f.value("alpha", nlohmann::json()));
+  const bool diffusive = f.value("diffusive", true);
+  c.text(x0 + 10, y0 + 38,
+         "halves: D = " + fmt(number(f.value("D_first_half", nlohmann::json()))) + ", " +
+             fmt(number(f.value("D_second_half", nlohmann::json()))) + ";  growth ~ t^" +
+             (std::isfinite(alpha) ? fmt(alpha) + " +- " + fmt(number(f.value("alpha_error", nlohmann::json())))
+                                   : std::string("? (a half does not grow)")) +
+             (diffusive ? "" : "   NOT DIFFUSIVE"),
+         12, diffusive ? 0.4 : 1.0, diffusive ? 0.8 : 0.45, diffusive ? 1.0 : 0.35);
 }
 
 void render_diffusion(const Plan& plan, const Result& r, const nlohmann::json& j, const std::string& path) {
@@ -178,7 +190,7 @@ void write_analysis_pictures(const Plan& plan, const Result& r, const std::strin
     names.push_back("frequency_map.png");
     if (plan.scene.initial == "grid") {
       write_grid_picture(plan, r, dir + "/diffusion_index.png", diffusion_index(*rec),
-                         "diffusion index log10 |nu(2) - nu(1)|");
+                         "diffusion index log10 ||nu(2)| - |nu(1)||");
       names.push_back("diffusion_index.png");
     }
   }

@@ -4,6 +4,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <stdexcept>
 
 #include "arnoldweb/diffusion.hpp"
@@ -25,7 +27,30 @@ json fit_json(const DiffusionFit& f) {
           {"drift", f.drift},
           {"slope_first_half", f.slope_first_half},
           {"slope_second_half", f.slope_second_half},
+          {"D_first_half", f.D_first_half},
+          {"D_second_half", f.D_second_half},
+          {"alpha", number_or_null(f.alpha)},
+          {"alpha_error", f.alpha_error},
+          {"diffusive", f.diffusive},
           {"replicates", f.replicates}};
+}
+
+std::string short_number(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", v);
+  return b;
+}
+
+// The warning for a fit whose variance does not grow linearly (DiffusionFit::diffusive).
+std::string not_diffusive(const char* direction, const DiffusionFit& f, double t_min) {
+  const std::string growth = std::isfinite(f.alpha)
+                                 ? "grows like t^" + short_number(f.alpha) + " +- " + short_number(f.alpha_error)
+                                 : std::string("does not grow in one half of the fit");
+  return "observe.diffusion: the variance " + std::string(direction) + " the resonance " + growth +
+         " over t >= " + short_number(t_min) + " T (D of the two halves " + short_number(f.D_first_half) +
+         " and " + short_number(f.D_second_half) + "): not diffusive (|alpha - 1| > " +
+         short_number(kDiffusiveExponent) + " + 2 errors), D " + direction +
+         " is not a diffusion coefficient here (docs/frequencies.md)";
 }
 
 // The actions of the trajectories that ended with status ok, at t_k = k every.
@@ -64,20 +89,28 @@ json diffusion(const Plan& plan, const Records& rec) {
             {"average_every", sc.diffusion_average_every},
             {"flagged", rec.count() - s.trajectories},
             {"definition", "Var[e . dI](t) = sigma0^2 + 2 D t by least squares over t >= fit_from; D in action^2 per "
-                           "T; error: bootstrap over trajectories"}};
+                           "T; error: bootstrap over trajectories; linearity: D of the two halves of the fitted "
+                           "times, alpha of Var - sigma0^2 ~ t^alpha from their slopes, diffusive where |alpha - 1| "
+                           "<= 0.2 + 2 errors"}};
   try {
     const DiffusionMoments m = diffusion_moments(s, {along, across});
     DiffusionOptions o;
     o.t_min = plan.start_time() + sc.diffusion_fit_from;
     j["trajectories"] = m.used;
     j["excluded"] = m.excluded;
-    j["along_fit"] = fit_json(fit_diffusion(s, along, o));
+    const DiffusionFit along_fit = fit_diffusion(s, along, o);
+    j["along_fit"] = fit_json(along_fit);
     // across: the direction made orthogonal to `along`, as the moments use it
     std::vector<double> f = across;
     double aa = 0, af = 0;
     for (int c = 0; c < 3; ++c) aa += along[c] * along[c], af += along[c] * f[c];
     for (int c = 0; c < 3; ++c) f[c] -= af / aa * along[c];
-    j["across_fit"] = fit_json(fit_diffusion(s, f, o));
+    const DiffusionFit across_fit = fit_diffusion(s, f, o);
+    j["across_fit"] = fit_json(across_fit);
+    json warnings = json::array();
+    if (!along_fit.diffusive) warnings.push_back(not_diffusive("along", along_fit, o.t_min));
+    if (!across_fit.diffusive) warnings.push_back(not_diffusive("across", across_fit, o.t_min));
+    j["warnings"] = warnings;
     json t = json::array(), am = json::array(), av = json::array(), cv = json::array();
     for (std::size_t k = 0; k < m.t.size(); ++k) {
       t.push_back(m.t[k]);

@@ -605,9 +605,10 @@ void analysis_keys(Rows& add) {
                              : boolean(false);
       },
       switch_into(&Scene::frequencies, true),
-      "Frequency map analysis (NAFF, docs/frequencies.md): the leading frequency of every angle of every "
-      "trajectory over two consecutive windows of `samples` samples `every` T apart, from t = every on, and "
-      "the diffusion index (log10 of the norm of nu(2) - nu(1)): frequencies.h5, frequency_map.png, diffusion_index.png.",
+      "Frequency map analysis (NAFF, docs/frequencies.md): the frequency of the largest term of every angle of "
+      "every trajectory over two consecutive windows of `samples` samples `every` T apart, from t = every on, and "
+      "the diffusion index (log10 of the norm of |nu(2)| - |nu(1)|): frequencies.h5, frequency_map.png, "
+      "diffusion_index.png.",
       Shape::Composite);
   add("observe.frequencies.samples", "integer", "16 to 65536", "an integer from 16 to 65536",
       integer_of(&Scene::frequency_samples),
@@ -639,7 +640,8 @@ void analysis_keys(Rows& add) {
       switch_into(&Scene::diffusion, true),
       "Arnold diffusion (docs/frequencies.md): the actions (momenta) of every trajectory every `every` T, the "
       "moments of their displacement along and across a resonance, and the diffusion coefficient from the "
-      "growth of the variance with a bootstrap error bar: diffusion.h5, diffusion.csv, diffusion.png.",
+      "growth of the variance with a bootstrap error bar and the growth's linearity (a warning where it is not "
+      "diffusive): diffusion.h5, diffusion.csv, diffusion.png.",
       Shape::Composite);
   add("observe.diffusion.every", "float", "> 0, divides run.duration, a multiple of the shortest sample interval",
       "a finite float greater than 0 (in units of T)", real_of(&Scene::diffusion_every),
