@@ -10,8 +10,12 @@ find_package(PkgConfig REQUIRED)
 # library still runs and writes data, and `arnoldweb render` can draw the
 # pictures later on a machine that has it.
 pkg_check_modules(CAIRO IMPORTED_TARGET cairo)
-# CFITSIO writes map.fits, the HEALPix FITS map (output.formats; Debian: libcfitsio-dev)
-pkg_check_modules(CFITSIO REQUIRED IMPORTED_TARGET cfitsio)
+# CFITSIO writes map.fits, the HEALPix FITS map (output.formats; Debian: libcfitsio-dev); without
+# it (e.g. a bare GPU node) output.formats = ["hdf5", "fits"] is refused when the scene is read.
+pkg_check_modules(CFITSIO IMPORTED_TARGET cfitsio)
+if(NOT CFITSIO_FOUND)
+  message(STATUS "CFITSIO not found: this build refuses output.formats \"fits\" (Debian: libcfitsio-dev)")
+endif()
 find_path(XXHASH_INCLUDE_DIR xxhash.h DOC "xxHash (Debian: libxxhash-dev)" REQUIRED)
 find_library(XXHASH_LIBRARY xxhash DOC "xxHash (Debian: libxxhash-dev)" REQUIRED)
 add_library(arnoldweb_xxhash INTERFACE IMPORTED)

@@ -39,8 +39,10 @@ void write_run_files(const Plan& plan, const Result& result, const fs::path& dir
   };
   if (!result.map.empty() || !result.zoom.empty())
     file("map.h5", [&](const std::string& p) { write_map_hdf5(p, plan, result); });
+#if ARNOLDWEB_HAVE_CFITSIO  // else the scene reader refused output.formats "fits"
   if (!result.map.empty() && plan.scene.writes_format("fits"))
     file("map.fits", [&](const std::string& p) { write_map_fits(p, plan, result); });
+#endif
   for (const std::string& name : record_files(result))
     file(name, [&](const std::string& p) { write_records_hdf5(p, name, plan, result); });
   double lon, lat;

@@ -697,6 +697,10 @@ void output_keys(Rows& add) {
         }
         for (const std::string& f : v)
           if (f != "hdf5" && f != "fits") return r.bad(key, n, true, " (\"" + f + "\" is no format of the map)");
+#if !ARNOLDWEB_HAVE_CFITSIO
+        if (std::find(v.begin(), v.end(), "fits") != v.end())
+          return r.bad(key, n, true, " (\"fits\": this build has no CFITSIO, found when it was configured; Debian: libcfitsio-dev)");
+#endif
         if (std::find(v.begin(), v.end(), "hdf5") == v.end())
           return r.bad(key, n, true, " (map.h5 is what arnoldweb reads back: render, compare, resume, Python's load)");
         s.formats = v;
