@@ -19,7 +19,9 @@
 #ifdef ARNOLDWEB_HAVE_CAIRO
 #include <cairo.h>
 #endif
+#ifdef ARNOLDWEB_HAVE_CFITSIO
 #include <fitsio.h>
+#endif
 #ifdef ARNOLDWEB_HAVE_HEALPIX_CXX
 #include <healpix_map.h>
 #include <healpix_map_fitsio.h>
@@ -122,6 +124,7 @@ TEST_SUITE("output") {
     CHECK_FALSE(fs::exists(dir + ".partial-" + std::to_string(::getpid())));
   }
 
+#ifdef ARNOLDWEB_HAVE_CFITSIO
   TEST_CASE("map.fits (output.formats) is a HEALPix FITS map: RING, NSIDE, the counts of map.h5, listed with its digest") {
     Plan p = small_plan();
     const Result& r = small_result();
@@ -176,6 +179,12 @@ TEST_SUITE("output") {
     CHECK(m[100] == static_cast<double>(r.map[100]));
 #endif
   }
+#else
+  TEST_CASE("a build without CFITSIO refuses output.formats \"fits\" when the scene is read, naming the package") {
+    CHECK_THROWS_WITH_AS(awtest::scene_from("", {"output.formats=[\"hdf5\", \"fits\"]"}),
+                         doctest::Contains("libcfitsio-dev"), SceneError);
+  }
+#endif
 
 #ifdef ARNOLDWEB_HAVE_CAIRO
   TEST_CASE("pictures are PNGs of the right size, not blank") {
