@@ -19,8 +19,7 @@ import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "tests", "explorer"))
-import support as S  # noqa: E402
+CHROMIUM = "/usr/bin/chromium"
 
 p = argparse.ArgumentParser()
 p.add_argument("--cli", required=True)
@@ -33,6 +32,9 @@ p.add_argument("--frames", type=int, default=30)
 p.add_argument("--no-browser", action="store_true",
                help="only the zoom, timed over HTTP from the request to its map's bytes (a machine without Chromium)")
 a = p.parse_args()
+if not a.no_browser:  # the browser's tools (selenium, numpy, healpy): a machine without them can still time the zoom
+    sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "tests", "explorer"))
+    import support as S  # noqa: E402
 shutil.rmtree(a.work, ignore_errors=True)
 os.makedirs(a.work)
 scene = os.path.join(a.source, "scenes", "default.toml")
@@ -77,9 +79,9 @@ def measure(d, url):
 
 cpu = subprocess.run(["lscpu"], capture_output=True, text=True).stdout
 model = next((l.split(":", 1)[1].strip() for l in cpu.splitlines() if l.startswith("Model name")), platform.processor())
-browser = (subprocess.run([S.CHROMIUM, "--version"], capture_output=True, text=True).stdout.strip()
-           if shutil.which(S.CHROMIUM) else "absent")
-print(f"machine: {model}, {os.cpu_count()} CPUs; chromium {browser}")
+chromium = (subprocess.run([CHROMIUM, "--version"], capture_output=True, text=True).stdout.strip()
+            if shutil.which(CHROMIUM) else "absent")
+print(f"machine: {model}, {os.cpu_count()} CPUs; chromium {chromium}")
 maps = {"default scene (nside 64)": ("default", []),
         "nside 1024": ("n1024", ["observe.velocity_map.nside=1024", "ensemble.trajectories=200000"])}
 for name, (out, sets) in maps.items():
