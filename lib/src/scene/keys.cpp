@@ -607,7 +607,7 @@ void analysis_keys(Rows& add) {
       switch_into(&Scene::frequencies, true),
       "Frequency map analysis (NAFF, docs/frequencies.md): the frequency of the largest term of every angle of "
       "every trajectory over two consecutive windows of `samples` samples `every` T apart, from t = every on, and "
-      "the diffusion index (log10 of the norm of |nu(2)| - |nu(1)|): frequencies.h5, frequency_map.png, "
+      "the diffusion index (log10 of the norm of abs(nu(2)) - abs(nu(1))): frequencies.h5, frequency_map.png, "
       "diffusion_index.png.",
       Shape::Composite);
   add("observe.frequencies.samples", "integer", "16 to 65536", "an integer from 16 to 65536",
