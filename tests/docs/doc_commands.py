@@ -68,6 +68,7 @@ import dataclasses
 import glob
 import os
 import re
+import textwrap
 import shlex
 import shutil
 import signal
@@ -317,8 +318,8 @@ def markdown_elements(path: str) -> list[Element]:
         else:
             lang, block = payload
             if lang == "python":
-                element = Element(rel, line, "block", [Command("\n".join(t for _, t in block), line)], [],
-                                  python_code=True)
+                element = Element(rel, line, "block",  # a block in a list item: its indent is the item's
+                                  [Command(textwrap.dedent("\n".join(t for _, t in block)), line)], [], python_code=True)
             elif lang in SHELL_LANGS and block and block[0][1].startswith("#!"):
                 element = Element(rel, line, "block", [Command("\n".join(t for _, t in block), line)], [])
             elif lang in SHELL_LANGS or lang == "":
