@@ -128,6 +128,13 @@ AW.zoom = (function () {
     if (!AW.data.served()) return false;
     try { server = await AW.data.json("api/server"); } catch (e) { AW.app.error(e.message); return false; }
     if (server.scene_run && server.scene_run.state !== "done") { waitForScene(server.scene_run); return true; }
+    // the scene's run ended between the page's reading of the runs and this answer: read them again
+    // (once: a finished run without a map then shows the page's own message)
+    if (server.scene_run && !AW.app.panels.length && !sessionStorage.getItem("aw-scene-reread")) {
+      sessionStorage.setItem("aw-scene-reread", "1");
+      location.reload();
+      return true;
+    }
     if (!server.zoom || !AW.app.panels.length) return false;
     $("zoom").hidden = false;
     $("zoom-n").max = server.zoom.max_trajectories;
