@@ -85,6 +85,12 @@ first_cuda() {  # the id of the first CUDA device
 }
 
 ctest_rc=-; parity_rc=-
+gpu_suites() {  # TIMEOUT REGEX: the ctest suites REGEX of build-gpu, the log in $OUT/ctest.txt, its rc
+  (cd build-gpu && ctest --output-on-failure --timeout "$1" -R "$2") >"$OUT/ctest.txt" 2>&1
+  local rc=$?
+  grep -E "tests passed|Passed|Failed|\*\*\*" "$OUT/ctest.txt"
+  return $rc
+}
 if [ "$mode" = accuracy ]; then
   stamp "accuracy for less: Figure 3 at max|dE| <= ${AW_ACC_TARGETS:-1e-8}"
   CUDA0=$(first_cuda)
@@ -119,21 +125,15 @@ if [ "$mode" = science ]; then
     timeout 120 bash bench/gpu/rates.sh build-gpu/arnoldweb "$CUDA0" /tmp/aw-rates 1 | tee "$OUT/rates.txt"
   fi
   stamp "GPU suites of issues 25 and 26 (open runs, frequencies) and the parity suites"
-  (cd build-gpu && ctest --output-on-failure --timeout 200 \
-     -R "${AW_SCIENCE_TESTS:-^(parity\.cuda|parity\.opencl|open-runs\.cuda|open-runs\.opencl|frequency-runs\.cuda|frequency-runs\.opencl|order\.cuda)$}") \
-     >"$OUT/ctest.txt" 2>&1
-  grep -E "tests passed|Passed|Failed|\*\*\*" "$OUT/ctest.txt"
+  gpu_suites 200 "${AW_SCIENCE_TESTS:-^(parity\.cuda|parity\.opencl|open-runs\.cuda|open-runs\.opencl|frequency-runs\.cuda|frequency-runs\.opencl|order\.cuda)$}"
   stamp "done"
   exit 0
 fi
 if [ "$mode" = parity ]; then
   CUDA0=$(first_cuda)
   stamp "GPU parity suites"
-  (cd build-gpu && ctest --output-on-failure --timeout 300 \
-     -R "${AW_PARITY_TESTS:-^(parity\.cuda|parity\.opencl|open-runs\.cuda|frequency-runs\.cuda|frequency-runs\.opencl|order\.cuda)$}") \
-     >"$OUT/ctest.txt" 2>&1
+  gpu_suites 300 "${AW_PARITY_TESTS:-^(parity\.cuda|parity\.opencl|open-runs\.cuda|frequency-runs\.cuda|frequency-runs\.opencl|order\.cuda)$}"
   ctest_rc=$?
-  grep -E "tests passed|Passed|Failed|\*\*\*" "$OUT/ctest.txt"
   stamp "explorer: a zoom of ${AW_ZOOM:-1000000} trajectories on $CUDA0, request to map bytes"
   timeout 200 python3 bench/explorer/viewer.py --cli build-gpu/arnoldweb --no-browser --device "$CUDA0" \
     --zoom "${AW_ZOOM:-1000000}" --work /tmp/aw-viewer-bench 2>&1 | tail -3 | tee "$OUT/explorer.txt"

@@ -130,6 +130,7 @@ AW.zoom = (function () {
     if (server.scene_run && server.scene_run.state !== "done") { waitForScene(server.scene_run); return true; }
     // the scene's run ended between the page's reading of the runs and this answer: read them again
     // (once: a finished run without a map then shows the page's own message)
+    if (AW.app.panels.length) sessionStorage.removeItem("aw-scene-reread");
     if (server.scene_run && !AW.app.panels.length && !sessionStorage.getItem("aw-scene-reread")) {
       sessionStorage.setItem("aw-scene-reread", "1");
       location.reload();
