@@ -34,6 +34,48 @@ bool contains(const std::string& s, const std::string& part) { return s.find(par
 
 bool is_elf(const std::string& image) { return image.size() > 4 && image.compare(0, 4, "\x7f" "ELF") == 0; }
 
+KernelConfig config(std::uint32_t features, Precision precision, MathMode math, bool kick_first, int stages) {
+  KernelConfig k;
+  k.features = features;
+  k.precision = precision;
+  k.math = math;
+  k.kick_first = kick_first;
+  k.stages = stages;
+  return k;
+}
+
+// Every precision, math mode, stepper kind and stage count (1, 7, 15) with the
+// given features.
+constexpr int kStepperConfigs = 2 * 2 * 2 * 3;
+std::vector<KernelConfig> stepper_configs(std::uint32_t features) {
+  std::vector<KernelConfig> all;
+  for (Precision precision : {Precision::Double, Precision::Float})
+    for (MathMode math : {MathMode::Portable, MathMode::Native})
+      for (bool kick_first : {false, true})
+        for (int stages : {1, 7, 15}) all.push_back(config(features, precision, math, kick_first, stages));
+  return all;
+}
+
+// Compiles the ensemble kernel of k for sm_90 and checks the image: 1 when it
+// compiled, 0 (and a failed check with NVRTC's log) when not.
+int compiles(const KernelConfig& k) {
+  const std::string defines = k.defines();
+  CAPTURE(defines);
+  detail::CudaImage img;
+  try {
+    img = detail::nvrtc_compile_ensemble(defines, kSm90, "nvrtc test");
+  } catch (const BuildError& e) {
+    FAIL_CHECK(e.what());
+    return 0;
+  }
+  CHECK(img.target.cubin);
+  CHECK(is_elf(img.data));
+  CHECK(contains(img.data, "aw_ensemble"));
+  CHECK(contains(img.data, "aw_fold"));
+  CHECK(contains(img.options, defines));
+  return 1;
+}
+
 // Sets an environment variable for the lifetime of the object.
 struct ScopedEnv {
   std::string name, old;
@@ -92,38 +134,20 @@ TEST_SUITE("nvrtc") {
     CHECK(contains(line, "-DAW_FLOAT"));
   }
 
-  TEST_CASE("the ensemble kernel compiles for sm_90 in every configuration") {
-    std::vector<std::uint32_t> masks = {0u, AW_F_ALL};
-    for (std::uint32_t bit = 1; bit <= AW_F_ALL; bit <<= 1) masks.push_back(bit);
+  TEST_CASE("the ensemble kernel compiles for sm_90: every feature, precision, math, stepper kind and stage count") {
+    // No feature bit and all of them in the whole cross product of the rest;
+    // every single bit twice, with the other choice of each of the rest
+    // (a covering set: every value of every axis meets every bit). The whole
+    // cross product of every bit: ctest nvrtc.long (ARNOLDWEB_LONG_TESTS=1).
     int compiled = 0;
-    for (Precision precision : {Precision::Double, Precision::Float})
-      for (MathMode math : {MathMode::Portable, MathMode::Native})
-        for (std::uint32_t features : masks)
-          for (int kick_first : {0, 1})
-            for (int stages : {1, 7, 15}) {
-              KernelConfig k;
-              k.precision = precision;
-              k.math = math;
-              k.features = features;
-              k.kick_first = kick_first != 0;
-              k.stages = stages;
-              const std::string defines = k.defines();
-              CAPTURE(defines);
-              detail::CudaImage img;
-              try {
-                img = detail::nvrtc_compile_ensemble(k.defines(), kSm90, "nvrtc test");
-              } catch (const BuildError& e) {
-                FAIL_CHECK(e.what());
-                continue;
-              }
-              CHECK(img.target.cubin);
-              CHECK(is_elf(img.data));
-              CHECK(contains(img.data, "aw_ensemble"));
-              CHECK(contains(img.data, "aw_fold"));
-              CHECK(contains(img.options, k.defines()));
-              ++compiled;
-            }
-    CHECK(compiled == 2 * 2 * static_cast<int>(masks.size()) * 2 * 3);
+    for (std::uint32_t features : {0u, static_cast<std::uint32_t>(AW_F_ALL)})
+      for (const KernelConfig& k : stepper_configs(features)) compiled += compiles(k);
+    int bits = 0;
+    for (std::uint32_t bit = 1; bit <= AW_F_ALL; bit <<= 1, ++bits) {
+      compiled += compiles(config(bit, Precision::Double, MathMode::Portable, false, 7));
+      compiled += compiles(config(bit, Precision::Float, MathMode::Native, true, 15));
+    }
+    CHECK(compiled == 2 * kStepperConfigs + 2 * bits);
   }
 
   TEST_CASE("every model's kernel compiles for sm_90 (double and float, every effect, both stepper kinds)") {
@@ -231,6 +255,20 @@ TEST_SUITE("nvrtc") {
   TEST_CASE("the disk cache can be switched off") {
     ScopedEnv env("ARNOLDWEB_CACHE_DIR", "off");
     CHECK(detail::cuda_cache_dir().empty());
+  }
+}
+
+// The whole cross product of every feature bit (480 compiles, about 4 CPU
+// minutes): ctest nvrtc.long, with ARNOLDWEB_LONG_TESTS=1 (bench/gpu/run.sh).
+TEST_SUITE("nvrtc-long") {
+  TEST_CASE("the ensemble kernel compiles for sm_90 in every configuration of every feature bit") {
+    if (!awtest::require_long_tests("nvrtc-long")) return;
+    std::vector<std::uint32_t> masks = {0u, AW_F_ALL};
+    for (std::uint32_t bit = 1; bit <= AW_F_ALL; bit <<= 1) masks.push_back(bit);
+    int compiled = 0;
+    for (std::uint32_t features : masks)
+      for (const KernelConfig& k : stepper_configs(features)) compiled += compiles(k);
+    CHECK(compiled == static_cast<int>(masks.size()) * kStepperConfigs);
   }
 }
 
