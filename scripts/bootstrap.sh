@@ -35,7 +35,16 @@ if command -v ccache >/dev/null 2>&1; then
   launcher_args+=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi
 
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "${cuda_args[@]}" "${launcher_args[@]}" "$@"
+# The cpu kernels for the instruction sets this machine runs (ARNOLDWEB_CPU_ISAS=host:
+# the baseline x86-64 and the best level here; cmake/ArnoldwebCpuKernels.cmake): a build
+# that runs where it is built compiles no set it can neither run nor test, a third less
+# of the kernels' compile time. Packages and wheels keep every set
+# (ARNOLDWEB_CPU_ISAS="x86-64;x86-64-v3;x86-64-v4", CMake's default); so does
+# ARNOLDWEB_CPU_ISAS=default here.
+isas=${ARNOLDWEB_CPU_ISAS:-host}
+[ "$isas" = default ] && isas="x86-64;x86-64-v3;x86-64-v4"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "-DARNOLDWEB_CPU_ISAS=$isas" \
+  "${cuda_args[@]}" "${launcher_args[@]}" "$@"
 # ARNOLDWEB_BUILD_TARGETS="a b": only those (the ones this configuration has), e.g.
 # scripts/run-default.sh's program and pictures' plugin; else everything
 targets=()

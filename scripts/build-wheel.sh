@@ -91,6 +91,12 @@ fi
 if command -v nvcc >/dev/null 2>&1; then
   defines+=(-C "cmake.define.CUDAToolkit_ROOT=$(dirname "$(dirname "$(command -v nvcc)")")")
 fi
+# ARNOLDWEB_CPU_ISAS in the environment: the cpu kernels' instruction sets (default: every
+# set, x86-64, x86-64-v3 and x86-64-v4, so that the wheel runs on any x86-64 CPU);
+# scripts/test-python.sh passes build/'s, whose objects ccache then reuses
+if [ -n "${ARNOLDWEB_CPU_ISAS:-}" ]; then
+  defines+=(-C "cmake.define.ARNOLDWEB_CPU_ISAS=$ARNOLDWEB_CPU_ISAS")
+fi
 # the compilers build/ was configured with (pip's environment would name
 # gcc/g++ instead of cc/c++, and ccache counts the name)
 if [ -f build/CMakeCache.txt ]; then

@@ -41,6 +41,13 @@ rm -rf "$probe"
   || skip "deb.debian.org cannot be reached for the sources of the wheel's HDF5 and CFITSIO (scripts/wheel-deps.sh)"
 
 start=$SECONDS
+# the instruction sets of build/'s cpu kernels (scripts/bootstrap.sh: the ones this
+# machine runs), so that the test wheel reuses build/'s objects through ccache;
+# tests/python/test_wheel.py checks the wheel has them
+if [ -z "${ARNOLDWEB_CPU_ISAS:-}" ] && [ -f build/CMakeCache.txt ]; then
+  ARNOLDWEB_CPU_ISAS=$(sed -n 's/^ARNOLDWEB_CPU_ISAS:[A-Z]*=//p' build/CMakeCache.txt)
+  export ARNOLDWEB_CPU_ISAS
+fi
 mkdir -p build-python
 log=build-python/build-wheel.log
 if ! WHEEL_DIR="$root/build-python/dist" PYTHONS="$python" scripts/build-wheel.sh >"$log" 2>&1; then
