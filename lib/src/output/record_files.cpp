@@ -74,9 +74,19 @@ void plan_attribute(H5Writer& h, hid_t where, const std::string& name, const Pla
     h.attr(where, "samples", static_cast<std::int64_t>(plan.scene.frequency_samples));
     h.attr(where, "every", plan.scene.frequency_every);
     h.attr(where, "window_order", static_cast<std::int64_t>(plan.scene.frequency_window));
-  } else if (name == "diffusion_every")
+  } else if (name == "diffusion_every") {
     h.attr(where, "every", plan.scene.diffusion_every);
-  else
+  } else if (name == "trajectory_samples") {  // which trajectories, when (observe.trajectories)
+    const std::vector<std::int64_t> ids = plan.scene.picked_trajectories();
+    const auto samples = static_cast<std::size_t>(plan.scene.duration / plan.scene.trajectory_every + 0.5) + 1;
+    std::vector<double> t(samples);
+    for (std::size_t q = 0; q < samples; ++q) t[q] = plan.start_time() + static_cast<double>(q) * plan.scene.trajectory_every;
+    h.attr(h.dataset(where, "ids", H5T_NATIVE_INT64, {ids.size()}, ids.data()), "meaning",
+           std::string("the trajectory (index in the ensemble) of each row"));
+    h.attr(h.dataset(where, "time", H5T_NATIVE_DOUBLE, {t.size()}, t.data()), "meaning",
+           std::string("the time of each sample, in T"));
+    h.attr(where, "every", plan.scene.trajectory_every);
+  } else
     throw OutputError(name, "the output table names an attribute the writer does not know");
 }
 
