@@ -5,17 +5,21 @@
 //    float; its energy error is zero at t = 0 and within the run's largest;
 //  - the same bits on every device, in chunks of any size, in time slices, and
 //    in a run of the picked trajectory alone (what `arnoldweb orbit` runs);
-//  - bad values refused, naming the key.
+//  - bad values refused, naming the key;
+//  - `arnoldweb orbit SCENE --id N` (ctest trajectories.cli): the digest of ids = [N] in the run of all.
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fstream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "arnoldweb/errors.hpp"
 #include "aw_params.h"
+#include "run_outputs.hpp"
 #include "support.hpp"
 
 using namespace arnoldweb;
@@ -161,5 +165,31 @@ TEST_SUITE("trajectories") {
     std::string many = "[0";
     for (int i = 1; i <= 1024; ++i) many += ", " + std::to_string(i);
     CHECK_THROWS_AS(picked_scene({"observe.trajectories={ ids = " + many + "], every = 1.0 }"}), SceneError);
+  }
+}
+
+TEST_SUITE("trajectories-cli") {
+  TEST_CASE("arnoldweb orbit SCENE --id N: the bits of observe.trajectories ids = [N] in the whole run") {
+    const std::string dir = awtest::temp_dir("orbit");
+    const std::string scene = dir + "/scene.toml";
+    std::ofstream(scene) << "[ensemble]\ntrajectories = 1500\nseed = 5\n[integrator]\nstep = 0.01\n"
+                            "[run]\naverage = 2\nduration = 4\ndevice = \"cpu\"\n"
+                            "[observe]\nvelocity_map = { nside = 8 }\nenergy_error = { every = 0.5 }\n"
+                            "[output]\nimages = false\n";
+    REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--out", dir + "/all", "--set",
+                             "observe.trajectories={ ids = [1234], every = 1.0 }"}) == 0);
+    REQUIRE(awtest::run_cli({"orbit", scene, "--id", "1234", "--every", "1", "--quiet", "--out", dir + "/one"}) == 0);
+    const nlohmann::json all = awtest::summary_of(dir + "/all"), one = awtest::summary_of(dir + "/one");
+    CHECK_FALSE(all["digests"]["trajectories"].get<std::string>().empty());
+    CHECK(one["digests"]["trajectories"] == all["digests"]["trajectories"]);
+    CHECK(one["completed"] == 1);
+    // a trajectory outside the ensemble, an interval that does not divide the run: exit 2, nothing written
+    std::string out;
+    CHECK(awtest::run_cli({"orbit", scene, "--id", "1500", "--quiet", "--out", dir + "/outside"}, &out) == 2);
+    CHECK(out.find("--id 0 to 1499") != std::string::npos);
+    CHECK(awtest::run_cli({"orbit", scene, "--id", "3", "--every", "3", "--quiet", "--out", dir + "/every"}, &out) == 2);
+    CHECK(out.find("observe.trajectories.every") != std::string::npos);
+    CHECK_FALSE(std::ifstream(dir + "/outside/summary.json"));
+    CHECK_FALSE(std::ifstream(dir + "/every/summary.json"));
   }
 }
