@@ -9,6 +9,7 @@
 //  - `arnoldweb orbit SCENE --id N` (ctest trajectories.cli): the digest of ids = [N] in the run of all.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <memory>
@@ -19,6 +20,7 @@
 
 #include "arnoldweb/errors.hpp"
 #include "aw_params.h"
+#include "output/pictures.hpp"
 #include "run_outputs.hpp"
 #include "support.hpp"
 
@@ -189,6 +191,12 @@ TEST_SUITE("trajectories-cli") {
     CHECK(out.find("--id 0 to 1499") != std::string::npos);
     CHECK(awtest::run_cli({"orbit", scene, "--id", "3", "--every", "3", "--quiet", "--out", dir + "/every"}, &out) == 2);
     CHECK(out.find("observe.trajectories.every") != std::string::npos);
+    // with pictures (where the plugin opens): trajectories.png, the orbit in action space and its |dE|
+    if (arnoldweb::detail::pictures_available()) {
+      REQUIRE(awtest::run_cli({"orbit", scene, "--id", "7", "--quiet", "--out", dir + "/drawn", "--set", "output.images=true"}) == 0);
+      const nlohmann::json drawn = awtest::summary_of(dir + "/drawn");
+      CHECK(std::find(drawn["files"].begin(), drawn["files"].end(), "trajectories.png") != drawn["files"].end());
+    }
     CHECK_FALSE(std::ifstream(dir + "/outside/summary.json"));
     CHECK_FALSE(std::ifstream(dir + "/every/summary.json"));
   }

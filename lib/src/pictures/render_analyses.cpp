@@ -9,6 +9,10 @@
 //                     fitted line sigma0^2 + 2 D t, D with its error bar, and
 //                     the growth's linearity: the halves' D, the exponent
 //                     alpha (in red where the fit is not diffusive).
+//  trajectories.png   the picked orbits (observe.trajectories): each one's
+//                     momentum in action space (p_x, p_y), its direction on
+//                     the sphere (longitude, latitude of P / |P|), and
+//                     log10 |E(t) - E(0)| against t.
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -181,6 +185,73 @@ void render_diffusion(const Plan& plan, const Result& r, const nlohmann::json& j
   c.save(path);
 }
 
+// The colour of orbit k of n.
+std::array<double, 3> orbit_colour(std::size_t k, std::size_t n) {
+  const double hue = n > 1 ? static_cast<double>(k) / static_cast<double>(n - 1) : 0.0;
+  return {0.3 + 0.65 * hue, 0.85 - 0.45 * hue, 1.0 - 0.7 * hue};
+}
+
+// The picked orbits' (x, y) of sample values `of` (trajectory k, sample q, the record's reals).
+template <class Of>
+void orbit_panel(Canvas& c, double x0, double y0, double w, double h, const Records& rec, std::size_t samples,
+                 const std::array<double, 2>& rx, const std::array<double, 2>& ry, const std::string& x_label,
+                 const std::string& y_label, Of of) {
+  frame(c, x0, y0, w, h, rx, ry, x_label, y_label);
+  cairo_save(c.cr());
+  cairo_rectangle(c.cr(), x0, y0, w, h);
+  cairo_clip(c.cr());
+  cairo_set_line_width(c.cr(), 1.5);
+  const std::size_t picks = rec.count() / samples;
+  for (std::size_t k = 0; k < picks; ++k) {
+    const std::array<double, 3> colour = orbit_colour(k, picks);
+    cairo_set_source_rgb(c.cr(), colour[0], colour[1], colour[2]);
+    std::vector<double> x(samples), y(samples);
+    for (std::size_t q = 0; q < samples; ++q) {
+      const auto [a, b] = of(&rec.reals[(k * samples + q) * rec.reals_per], q);
+      x[q] = a, y[q] = b;
+    }
+    curve(c, x0, y0, w, h, rx, ry, x, y);
+  }
+  cairo_restore(c.cr());
+}
+
+void render_trajectories(const Plan& plan, const Result& r, const Records& rec, const std::string& path) {
+  const std::size_t samples = static_cast<std::size_t>(plan.scene.duration / plan.scene.trajectory_every + 0.5) + 1;
+  std::vector<double> px, py, lon, lat, t, de;
+  for (std::size_t m = 0; m < rec.count(); ++m) {
+    const double* v = &rec.reals[m * rec.reals_per];
+    const double norm = std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
+    px.push_back(v[3]), py.push_back(v[4]);
+    lon.push_back(std::atan2(v[4], v[3]) * 180 / M_PI), lat.push_back(std::asin(v[5] / norm) * 180 / M_PI);
+    t.push_back(static_cast<double>(m % samples) * plan.scene.trajectory_every);
+    de.push_back(std::log10(std::fabs(v[6])));
+  }
+  const int w = 1800, h = 640;
+  Canvas c(w, h);
+  const double every = plan.scene.trajectory_every;
+  orbit_panel(c, 110, 70, 440, 440, rec, samples, quantile_range(px, 0), quantile_range(py, 0), "p_x", "p_y",
+              [](const double* v, std::size_t) { return std::array<double, 2>{v[3], v[4]}; });
+  orbit_panel(c, 700, 70, 440, 440, rec, samples, quantile_range(lon, 0), quantile_range(lat, 0),
+              "longitude of P (degrees)", "latitude of P (degrees)", [](const double* v, std::size_t) {
+                const double n = std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
+                return std::array<double, 2>{std::atan2(v[4], v[3]) * 180 / M_PI, std::asin(v[5] / n) * 180 / M_PI};
+              });
+  orbit_panel(c, 1290, 70, 440, 440, rec, samples, quantile_range(t, 0), quantile_range(de, 0), "t (T)",
+              "log10 |E(t) - E(0)|", [every](const double* v, std::size_t q) {
+                return std::array<double, 2>{static_cast<double>(q) * every, std::log10(std::fabs(v[6]))};
+              });
+  const std::vector<std::int64_t> ids = plan.scene.picked_trajectories();
+  c.text(20, 28, "orbits of " + std::to_string(ids.size()) + " trajectories, every " + fmt(every) + " T   " +
+                     picture_title(plan), 15);
+  for (std::size_t k = 0; k < ids.size() && k < 40; ++k) {  // which colour is which trajectory
+    const std::array<double, 3> colour = orbit_colour(k, ids.size());
+    c.text(110 + 110.0 * static_cast<double>(k % 15), h - 56 + 16.0 * static_cast<double>(k / 15),
+           "#" + std::to_string(ids[k]), 12, colour[0], colour[1], colour[2]);
+  }
+  c.text(20, h - 12, picture_caption(r), 11, 0.7, 0.7, 0.7);
+  c.save(path);
+}
+
 }  // namespace
 
 void write_analysis_pictures(const Plan& plan, const Result& r, const std::string& dir,
@@ -193,6 +264,10 @@ void write_analysis_pictures(const Plan& plan, const Result& r, const std::strin
                          "diffusion index log10 ||nu(2)| - |nu(1)||");
       names.push_back("diffusion_index.png");
     }
+  }
+  if (const Records* rec = r.records_of("trajectories"); rec && rec->count() > 0) {
+    render_trajectories(plan, r, *rec, dir + "/trajectories.png");
+    names.push_back("trajectories.png");
   }
   if (const auto it = r.analyses.find("diffusion"); it != r.analyses.end()) {
     const nlohmann::json j = nlohmann::json::parse(it->second);
