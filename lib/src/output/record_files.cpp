@@ -11,6 +11,7 @@
 #include "output/atomic_file.hpp"
 #include "output/h5_writer.hpp"
 #include "output_table/output_table.hpp"
+#include "plan/plan_params.hpp"
 
 namespace arnoldweb {
 namespace {
@@ -78,9 +79,9 @@ void plan_attribute(H5Writer& h, hid_t where, const std::string& name, const Pla
     h.attr(where, "every", plan.scene.diffusion_every);
   } else if (name == "trajectory_samples") {  // which trajectories, when (observe.trajectories)
     const std::vector<std::int64_t> ids = plan.scene.picked_trajectories();
-    const auto samples = static_cast<std::size_t>(plan.scene.duration / plan.scene.trajectory_every + 0.5) + 1;
-    std::vector<double> t(samples);
-    for (std::size_t q = 0; q < samples; ++q) t[q] = plan.start_time() + static_cast<double>(q) * plan.scene.trajectory_every;
+    std::vector<double> t(static_cast<std::size_t>(detail::params(plan).ints.pick_samples) + 1);
+    for (std::size_t q = 0; q < t.size(); ++q)
+      t[q] = plan.start_time() + static_cast<double>(q) * plan.scene.trajectory_every;
     h.attr(h.dataset(where, "ids", H5T_NATIVE_INT64, {ids.size()}, ids.data()), "meaning",
            std::string("the trajectory (index in the ensemble) of each row"));
     h.attr(h.dataset(where, "time", H5T_NATIVE_DOUBLE, {t.size()}, t.data()), "meaning",

@@ -136,7 +136,9 @@ std::uint64_t lay_out_picked(std::uint32_t features, std::uint64_t hist_words, I
   ip.pick_base = static_cast<std::int64_t>((hist_words + 1) / 2 * 2);
   std::uint64_t end = hist_words;
   for (const RecordOutput* r : records_written(features))
-    if (r->picked) end = static_cast<std::uint64_t>(ip.pick_base) + 2 * picked_records(*r, ip) * static_cast<std::uint64_t>(r->reals(ip) + r->ints(ip));
+    if (r->picked)  // two words a value
+      end = static_cast<std::uint64_t>(ip.pick_base) +
+            2 * picked_records(*r, ip) * static_cast<std::uint64_t>(r->reals(ip) + r->ints(ip));
   return end;
 }
 

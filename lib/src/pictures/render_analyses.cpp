@@ -23,6 +23,7 @@
 #include "pictures/drawing.hpp"
 #include "pictures/canvas.hpp"
 #include "pictures/indicator_pictures.hpp"
+#include "plan/plan_params.hpp"
 
 namespace arnoldweb::detail {
 namespace {
@@ -191,55 +192,43 @@ std::array<double, 3> orbit_colour(std::size_t k, std::size_t n) {
   return {0.3 + 0.65 * hue, 0.85 - 0.45 * hue, 1.0 - 0.7 * hue};
 }
 
-// The picked orbits' (x, y) of sample values `of` (trajectory k, sample q, the record's reals).
-template <class Of>
-void orbit_panel(Canvas& c, double x0, double y0, double w, double h, const Records& rec, std::size_t samples,
-                 const std::array<double, 2>& rx, const std::array<double, 2>& ry, const std::string& x_label,
-                 const std::string& y_label, Of of) {
+// The picked orbits as curves (x, y): `samples` values of each, one orbit after the other.
+void orbit_panel(Canvas& c, double x0, double y0, double w, double h, std::size_t samples, const std::vector<double>& x,
+                 const std::vector<double>& y, const std::string& x_label, const std::string& y_label) {
+  const std::array<double, 2> rx = quantile_range(x, 0), ry = quantile_range(y, 0);
   frame(c, x0, y0, w, h, rx, ry, x_label, y_label);
   cairo_save(c.cr());
   cairo_rectangle(c.cr(), x0, y0, w, h);
   cairo_clip(c.cr());
   cairo_set_line_width(c.cr(), 1.5);
-  const std::size_t picks = rec.count() / samples;
+  const std::size_t picks = x.size() / samples;
   for (std::size_t k = 0; k < picks; ++k) {
     const std::array<double, 3> colour = orbit_colour(k, picks);
     cairo_set_source_rgb(c.cr(), colour[0], colour[1], colour[2]);
-    std::vector<double> x(samples), y(samples);
-    for (std::size_t q = 0; q < samples; ++q) {
-      const auto [a, b] = of(&rec.reals[(k * samples + q) * rec.reals_per], q);
-      x[q] = a, y[q] = b;
-    }
-    curve(c, x0, y0, w, h, rx, ry, x, y);
+    const auto from = static_cast<std::ptrdiff_t>(k * samples), to = from + static_cast<std::ptrdiff_t>(samples);
+    curve(c, x0, y0, w, h, rx, ry, std::vector<double>(x.begin() + from, x.begin() + to),
+          std::vector<double>(y.begin() + from, y.begin() + to));
   }
   cairo_restore(c.cr());
 }
 
 void render_trajectories(const Plan& plan, const Result& r, const Records& rec, const std::string& path) {
-  const std::size_t samples = static_cast<std::size_t>(plan.scene.duration / plan.scene.trajectory_every + 0.5) + 1;
+  const auto samples = static_cast<std::size_t>(params(plan).ints.pick_samples) + 1;
+  const double every = plan.scene.trajectory_every;
   std::vector<double> px, py, lon, lat, t, de;
   for (std::size_t m = 0; m < rec.count(); ++m) {
     const double* v = &rec.reals[m * rec.reals_per];
     const double norm = std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
     px.push_back(v[3]), py.push_back(v[4]);
     lon.push_back(std::atan2(v[4], v[3]) * 180 / M_PI), lat.push_back(std::asin(v[5] / norm) * 180 / M_PI);
-    t.push_back(static_cast<double>(m % samples) * plan.scene.trajectory_every);
+    t.push_back(static_cast<double>(m % samples) * every);
     de.push_back(std::log10(std::fabs(v[6])));
   }
   const int w = 1800, h = 640;
   Canvas c(w, h);
-  const double every = plan.scene.trajectory_every;
-  orbit_panel(c, 110, 70, 440, 440, rec, samples, quantile_range(px, 0), quantile_range(py, 0), "p_x", "p_y",
-              [](const double* v, std::size_t) { return std::array<double, 2>{v[3], v[4]}; });
-  orbit_panel(c, 700, 70, 440, 440, rec, samples, quantile_range(lon, 0), quantile_range(lat, 0),
-              "longitude of P (degrees)", "latitude of P (degrees)", [](const double* v, std::size_t) {
-                const double n = std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
-                return std::array<double, 2>{std::atan2(v[4], v[3]) * 180 / M_PI, std::asin(v[5] / n) * 180 / M_PI};
-              });
-  orbit_panel(c, 1290, 70, 440, 440, rec, samples, quantile_range(t, 0), quantile_range(de, 0), "t (T)",
-              "log10 |E(t) - E(0)|", [every](const double* v, std::size_t q) {
-                return std::array<double, 2>{static_cast<double>(q) * every, std::log10(std::fabs(v[6]))};
-              });
+  orbit_panel(c, 110, 70, 440, 440, samples, px, py, "p_x", "p_y");
+  orbit_panel(c, 700, 70, 440, 440, samples, lon, lat, "longitude of P (degrees)", "latitude of P (degrees)");
+  orbit_panel(c, 1290, 70, 440, 440, samples, t, de, "t (T)", "log10 |E(t) - E(0)|");
   const std::vector<std::int64_t> ids = plan.scene.picked_trajectories();
   c.text(20, 28, "orbits of " + std::to_string(ids.size()) + " trajectories, every " + fmt(every) + " T   " +
                      picture_title(plan), 15);

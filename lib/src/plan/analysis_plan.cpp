@@ -1,5 +1,5 @@
-// arnoldweb: the planner's part for the frequency analysis and the diffusion
-// samples (analysis_plan.hpp).
+// arnoldweb: the planner's part for the frequency analysis, the diffusion
+// samples and the picked trajectories' samples (analysis_plan.hpp).
 #include "plan/analysis_plan.hpp"
 
 #include <algorithm>
@@ -109,6 +109,8 @@ void fill_analysis_ints(const Scene& scene, const Plan& p, IntParams& ip) {
   }
   if (scene.diffusion) ip.diffusion_samples = exact_ratio(scene.duration, scene.diffusion_every);
   ip.diffusion_average_stride = p.diffusion_average_stride;
+  ip.diffusion_average_points =
+      scene.diffusion && scene.diffusion_average > 0 ? exact_ratio(scene.diffusion_average, scene.diffusion_average_every) : 0;
   ip.pick_stride = 1;
   if (scene.samples_trajectories()) {
     const std::vector<std::int64_t> ids = scene.picked_trajectories();
@@ -117,8 +119,6 @@ void fill_analysis_ints(const Scene& scene, const Plan& p, IntParams& ip) {
     ip.pick_samples = exact_ratio(scene.duration, scene.trajectory_every);
     ip.pick_stride = exact_ratio(scene.trajectory_every, segment_length(scene, p));
   }
-  ip.diffusion_average_points =
-      scene.diffusion && scene.diffusion_average > 0 ? exact_ratio(scene.diffusion_average, scene.diffusion_average_every) : 0;
 }
 
 void fill_analysis_reals(const Scene& scene, RealParams& rp) {
