@@ -118,7 +118,7 @@ std::vector<OutputLocation> output_locations() {
   std::vector<OutputLocation> out;
   for (const RecordOutput& row : detail::record_outputs()) {
     if (row.internal()) continue;
-    OutputLocation o{row.name, row.file, row.group, {}};
+    OutputLocation o{row.name, row.file, row.group, {}, !row.picked};
     for (const auto& d : row.datasets) o.datasets.push_back(d.name);
     out.push_back(std::move(o));
   }
