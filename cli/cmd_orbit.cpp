@@ -10,6 +10,7 @@
 #include "arnoldweb/errors.hpp"
 #include "command.hpp"
 #include "plan_report.hpp"
+#include "ranks.hpp"
 
 namespace arnoldweb::cli {
 namespace {
@@ -23,6 +24,9 @@ struct OrbitFlags {
 };
 
 int run_orbit(const OrbitFlags& f) {
+  refuse_mpirun_without_mpi();
+  if (cluster())  // one trajectory: one process (each rank would write the same directory)
+    throw OutputRefused("", "arnoldweb orbit runs one trajectory in one process: run it without mpirun or srun");
   Scene scene = load_scene_args(f.scene);
   if (f.id >= scene.trajectories)
     throw SceneError("--id", 0, 0, "observe.trajectories.ids",
