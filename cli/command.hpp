@@ -75,5 +75,6 @@ void add_compare_command(CLI::App& app, Action& action);
 void add_accuracy_command(CLI::App& app, Action& action);
 void add_view_command(CLI::App& app, Action& action);
 void add_serve_command(CLI::App& app, Action& action);
+void add_orbit_command(CLI::App& app, Action& action);
 
 }  // namespace arnoldweb::cli

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   add_models_command(app, action);
   add_check_command(app, action);
   add_run_command(app, action);
+  add_orbit_command(app, action);
   add_resume_command(app, action);
   add_continue_command(app, action);
   add_bench_command(app, action);

@@ -34,6 +34,7 @@ cases=(
   "expression|scenes/default_paper.toml|;--set;model.kind=expression;--set;model.potential=\"cos(x)*cos(y)*(1 + cos(2*z))\";--set;run.average=5;--set;run.duration=5$n3000"
   "gradient|scenes/default_paper.toml|;--set;integrator.method=saba4c;--set;run.average=5;--set;run.duration=5$n3000"
   "sbab3c|scenes/default.toml|;--set;run.average=5;--set;run.duration=10$n3000"
+  "orbits|scenes/default.toml|;--set;run.average=5;--set;run.duration=10;--set;observe.trajectories={ ids = [0, 5, 2999], every = 5.0 }$n3000"
   "chin4a-fourier|scenes/default_paper.toml|;--set;model.kind=fourier;--set;integrator.method=chin4a;--set;run.average=5;--set;run.duration=5$n3000"
   "sbab3c-expression|scenes/default.toml|;--set;model.kind=expression;--set;model.potential=\"cos(x)*cos(y)*(1 + cos(2*z))\";--set;run.average=5;--set;run.duration=5$n3000"
   "fli-grid|scenes/fli_e15.toml|;--set;ensemble.grid.nside=8;--set;run.duration=20;--set;run.average=20"

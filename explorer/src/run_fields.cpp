@@ -110,7 +110,7 @@ nlohmann::json read_run_fields(const std::string& dir, const nlohmann::json& sum
   std::string open_name;
   std::unique_ptr<MemoryFile> file;
   for (const OutputLocation& row : output_locations()) {
-    if (row.file.empty() || !listed(row.file)) continue;
+    if (row.file.empty() || !row.per_trajectory || !listed(row.file)) continue;  // fields over the trajectories
     if (open_name != row.file) {
       file.reset();
       file = std::make_unique<MemoryFile>(read_saved_file(dir, row.file), dir + "/" + row.file);

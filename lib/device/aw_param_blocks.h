@@ -101,6 +101,12 @@ typedef struct {
   aw_i64 diffusion_samples; /* K: action samples after t = 0 */
   aw_i64 diffusion_average_points; /* actions averaged into a sample (0: the actions at the sample time) */
   aw_i64 diffusion_average_stride; /* segments between two of them */
+  /* the sampled states of picked trajectories (effects/aw_fx_trajectories.h) */
+  aw_i64 pick_count;        /* picked trajectories: pick_ids[0 .. pick_count), increasing */
+  aw_i64 pick_stride;       /* segments between two samples */
+  aw_i64 pick_samples;      /* S: samples after t = 0 */
+  aw_i64 pick_base;         /* their first word in the histogram buffer (even) */
+  aw_i64 pick_ids[AW_MAX_PICKS];
   /* per-trajectory work memory in the series buffer (AW_BUFFERS): series_reals
    * reals per trajectory, in blocks of AW_SERIES_BLOCK trajectories */
   aw_i64 series_reals;

@@ -37,7 +37,9 @@
  * diffusion (docs/frequencies.md) */
 #define AW_F_FREQUENCIES 0x8000u
 #define AW_F_DIFFUSION 0x10000u
-#define AW_F_ALL 0x1ffffu
+/* the sampled states of chosen trajectories (observe.trajectories) */
+#define AW_F_TRAJECTORIES 0x20000u
+#define AW_F_ALL 0x3ffffu
 
 /* ------------------------------------------------ initial distributions
  * X is uniform on the accessible part of the torus in every case. */
@@ -89,6 +91,7 @@
 #define AW_OUT_CARRY 3         /* AW_CARRY_REALS reals, AW_CARRY_INTS integers: in and out */
 #define AW_OUT_FREQUENCIES 4   /* AW_FREQ_REALS reals (effects/aw_fx_frequencies.h) */
 #define AW_OUT_ACTIONS 5       /* 3 (K + 1) reals, 1 integer (effects/aw_fx_diffusion.h) */
+#define AW_OUT_TRAJECTORIES 6  /* picked: AW_PICK_REALS reals, AW_PICK_INTS integers per sample (effects/aw_fx_trajectories.h) */
 #define AW_FREQ_REALS 7
 /* A frequency pass over a window's samples is shared by a team of
  * AW_NAFF_TEAM members (aw_naff.h): member t takes samples t, t + T, ...;
@@ -107,6 +110,19 @@
  * kernels store every lane of a group; every lane width divides it). */
 #define AW_SERIES_BLOCK 32
 #define AW_OUT_SLOTS 8
+
+/* Picked records (observe.trajectories): a record per sample of each picked
+ * trajectory (at most AW_MAX_PICKS, ip->pick_ids), not per trajectory: they
+ * lie in the histogram buffer after the maps and the zoom, from word
+ * ip->pick_base on, each value in two 32-bit words (a real's bits in the
+ * kernel's precision, low word first; an integer's 64 bits), written once by
+ * the trajectory's work-item and folded, summed and checkpointed with the
+ * counts (only the trajectory's own launch writes a nonzero word: the sums
+ * are its bits). Record (k, q) of pick k, sample q: u_x u_y u_z (turns,
+ * wrapped) p_x p_y p_z E(t) - E(0) | winding x y z. */
+#define AW_MAX_PICKS 1024
+#define AW_PICK_REALS 7
+#define AW_PICK_INTS 3
 
 /* A state: 6 reals (u_x, u_y, u_z in turns, wrapped; p_x, p_y, p_z) and 4
  * integers (winding x, y, z; status). */

@@ -19,6 +19,7 @@ from ._errors import BuildError, DeviceError, Error, OutputError, OutputRefused,
 from ._result import COUNTER_NAMES, INDICATOR_NAMES, Result
 from ._explorer import serve, view
 from ._model import energy, potential, shell_momenta
+from ._orbit import Orbit, orbit
 from ._run import accuracy, check_states, continue_run, run
 from ._saved import load
 from ._scene import Scene
@@ -26,7 +27,7 @@ from ._scenes import scene, scenes
 
 __version__: str = _core.__version__
 
-__all__ = ["Scene", "Result", "run", "continue_run", "load", "view", "serve", "scene", "scenes", "accuracy", "check_states",
+__all__ = ["Scene", "Result", "run", "continue_run", "orbit", "Orbit", "load", "view", "serve", "scene", "scenes", "accuracy", "check_states",
            "potential", "energy", "shell_momenta", "devices", "methods",
            "scene_keys", "backend_problems", "default_device", "pixel_directions", "resonances", "compare_maps", "Error",
            "SceneError", "DeviceError", "BuildError", "OutputError", "OutputRefused", "PlanWarning", "StateError",

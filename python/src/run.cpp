@@ -73,7 +73,8 @@ void warn_plans(const arnoldweb::Job& job, bool write) {
 }
 
 std::shared_ptr<RunRecord> run_scene(const arnoldweb::Scene& scene, nb::object progress, bool write, bool force,
-                                     std::optional<Rows> x, std::optional<Rows> p, const std::string& units) {
+                                     std::optional<Rows> x, std::optional<Rows> p, const std::string& units,
+                                     std::optional<std::uint64_t> only) {
   auto record = std::make_shared<RunRecord>();
   record->stop_exception = nb::none();
   std::shared_ptr<arnoldweb::StateSet> initial;
@@ -108,7 +109,10 @@ std::shared_ptr<RunRecord> run_scene(const arnoldweb::Scene& scene, nb::object p
     for (const auto& b : backends) devices.push_back(b.get());
     arnoldweb::RunOptions options;
     options.stop = &hook.stop();
-    record->result = arnoldweb::run_job_on(job, devices, options, &hook);
+    if (only)  // one trajectory of the main scene, with its bits in a run of all (arnoldweb orbit)
+      record->result.results.push_back(arnoldweb::run_range(job.main(), *devices.front(), *only, 1, options));
+    else
+      record->result = arnoldweb::run_job_on(job, devices, options, &hook);
     if (write) {
       // a failed write must not lose what was computed: the error is raised
       // by the package with the result attached
@@ -129,8 +133,10 @@ std::shared_ptr<RunRecord> run_scene(const arnoldweb::Scene& scene, nb::object p
 void bind_run(nb::module_& m) {
   m.def("_run", &run_scene, nb::arg("scene"), nb::arg("progress").none(), nb::arg("write"), nb::arg("force"),
         nb::arg("x").none() = nb::none(), nb::arg("p").none() = nb::none(), nb::arg("units") = "radians",
-        "Runs a scene and its panels; progress(done, total, seconds) after every chunk. With write, "
-        "the scene's output.dir is checked first and written at the end. Returns the run's record.");
+        nb::arg("only").none() = nb::none(),
+        "Runs a scene and its panels (only: trajectory `only` of the main scene alone); progress(done, total, "
+        "seconds) after every chunk. With write, the scene's output.dir is checked first and written at the end. "
+        "Returns the run's record.");
 }
 
 }  // namespace awpy

@@ -165,6 +165,13 @@ std::vector<Variant> variants() {
                  s.diffusion_average_every = 0.02;
                  s.slice = 0.16;
                }});
+  // picked trajectories (observe.trajectories): their samples in the histogram buffer, two words a value,
+  // one of them in the second chunk, in time slices
+  v.push_back({"picked trajectories, in time slices", [](Scene& s) {
+                 s.trajectory_ids = {2, 12, 20};
+                 s.trajectory_every = 0.04;
+                 s.slice = 0.04;
+               }});
   v.push_back({"native math", [](Scene& s) { s.math = MathMode::Native; }, nullptr, false});
   return v;
 }
@@ -225,6 +232,8 @@ void run_variants(const std::function<bool(const Plan&)>& keep) {
         CHECK(awtest::first_difference(r.reals("indicators"), ref.reals("indicators")) == -1);
         CHECK(awtest::first_difference(r.reals("frequencies"), ref.reals("frequencies")) == -1);
         CHECK(awtest::first_difference(r.reals("actions"), ref.reals("actions")) == -1);
+        CHECK(awtest::first_difference(r.reals("trajectories"), ref.reals("trajectories")) == -1);
+        CHECK(r.ints("trajectories") == ref.ints("trajectories"));
         if (plan.kernel.features & AW_F_TEST_INJECT) CHECK(r.flagged_nonfinite == 1);
       }
     }

@@ -42,6 +42,7 @@ Scene parity_scene(Precision precision, MathMode math, const std::vector<std::st
     energy_error = { every = 1 }
     initial_states = true
     final_states = true
+    trajectories = { ids = [0, 17, 511], every = 1 }  # within the smallest ensemble and duration below
   )", all, "<parity>");
 }
 
@@ -60,6 +61,7 @@ TEST_SUITE("parity") {
     for (Precision p : {Precision::Double, Precision::Float}) {
       const Result& ref = scalar_reference(p);
       REQUIRE(ref.reals("final_states").size() == 10000 * AW_STATE_REALS);
+      REQUIRE(ref.reals("trajectories").size() == 3 * 11 * AW_PICK_REALS);
       REQUIRE(ref.binned > 9000);  // a reference that binned nothing would prove little
       REQUIRE_FALSE(awtest::devices_under_test().empty());
       for (const auto& dev : awtest::devices_under_test()) {
@@ -70,6 +72,8 @@ TEST_SUITE("parity") {
         const long d = awtest::first_difference(r.reals("final_states"), ref.reals("final_states"));
         CHECK_MESSAGE(d == -1, "first differing state value at trajectory " << d / AW_STATE_REALS);
         CHECK(awtest::first_difference(r.ints("final_states"), ref.ints("final_states")) == -1);
+        CHECK(awtest::first_difference(r.reals("trajectories"), ref.reals("trajectories")) == -1);
+        CHECK(awtest::first_difference(r.ints("trajectories"), ref.ints("trajectories")) == -1);
         CHECK(digest_map(r) == digest_map(ref));
         CHECK(r.binned == ref.binned);
         CHECK(r.flagged() == ref.flagged());

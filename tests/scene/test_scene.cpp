@@ -83,6 +83,9 @@ void check_same(const Scene& a, const Scene& b) {
     CHECK(a.confine_width == b.confine_width);
   }
   CHECK(a.frame_times == b.frame_times);
+  CHECK(a.trajectory_ids == b.trajectory_ids);
+  CHECK(a.trajectory_count == b.trajectory_count);
+  CHECK(a.trajectory_every == b.trajectory_every);
   // chaos indicators and grids
   CHECK(a.fli == b.fli);
   CHECK(a.switches == b.switches);
@@ -181,6 +184,10 @@ const char* kFullSceneFixed =
     "fit_from = 100\n"
     "average = 10.0\n"
     "average_every = 0.5\n"
+    "[observe.trajectories]\n"
+    "ids = [17, 5]\n"
+    "count = 3\n"
+    "every = 2.5\n"
     "[ensemble.grid]\n"
     "kind = \"plane\"\n"
     "nside = 32\n"

@@ -71,11 +71,12 @@ arnoldweb::Result run(const arnoldweb::Plan& plan, const RParams* rp, const IPar
       for (std::uint64_t i = 0; i < npix; ++i) r.map[i] += frame[i];
       if (plan.frames > 1) r.frames.push_back(std::move(frame));
     }
-    r.zoom.assign(hist.begin() + static_cast<std::ptrdiff_t>(plan.frames * npix),
-                  hist.begin() + static_cast<std::ptrdiff_t>(plan.hist_size));
+    const auto zoom = hist.begin() + static_cast<std::ptrdiff_t>(plan.frames * npix);
+    r.zoom.assign(zoom, zoom + static_cast<std::ptrdiff_t>(plan.zoom_resolution) * plan.zoom_resolution);
   }
   r.records = arnoldweb::detail::empty_records(plan);
   arnoldweb::detail::append_records(plan, std::vector<double>(rec_r.begin(), rec_r.end()), rec_i, r.records);
+  arnoldweb::detail::picked_from_words(plan, std::vector<std::uint64_t>(hist.begin(), hist.end()), r.records);
   r.chunks = {n};
   return r;
 }

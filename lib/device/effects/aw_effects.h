@@ -4,7 +4,8 @@
  *   aw_fx_begin         after the initial state: status, test_inject, initial_states, E(0)
  *   aw_fx_window_begin  at the start of every averaging window
  *   aw_fx_sample        after every segment (the finest sample interval): energy,
- *                       confinement, frequency and action samples, each at its stride
+ *                       confinement, frequency, action and picked trajectories'
+ *                       samples, each at its stride
  *   aw_fx_window_end    at the end of a window: flags, then the binning effects
  *   aw_fx_finish        after the run: counters, energy statistics, final_states
  * Adding an effect: its bit in aw_params.h, its header in effects/, its state
@@ -21,6 +22,7 @@
 #include "effects/aw_fx_indicators.h"
 #include "effects/aw_fx_states.h"
 #include "effects/aw_fx_testing.h"
+#include "effects/aw_fx_trajectories.h"
 
 /* What the effects keep per lane between the hooks. */
 typedef struct {
@@ -31,8 +33,9 @@ typedef struct {
   aw_tangent tangent;   /* indicators: the tangent vector and its observers */
   lreal asum[3];        /* diffusion with averaging: the sum of the actions so far towards the next sample */
   /* (k + 1) / stride and its remainder after segment k, for the energy, the
-   * frequency and the action samples (aw_count: no division per segment) */
-  aw_count energy_at, frequency_at, actions_at;
+   * frequency, the action and the picked trajectories' samples (aw_count: no
+   * division per segment) */
+  aw_count energy_at, frequency_at, actions_at, picks_at;
 } aw_fx;
 
 AW_FN void aw_fx_begin(aw_config cfg, aw_fx* fx, aw_lstate* s, lreal accepted, aw_lanes l,
@@ -49,10 +52,11 @@ AW_FN void aw_fx_begin(aw_config cfg, aw_fx* fx, aw_lstate* s, lreal accepted, a
   fx->emax = AW_LSPLAT(AW_R(0.0));
   fx->over = AW_LSPLAT(AW_R(0.0));
   fx->inside = AW_LSPLAT(AW_R(1.0));
-  if (AW_HAS(AW_F_ENERGY)) fx->e0 = aw_energy(s, rp);
+  if (AW_HAS(AW_F_ENERGY) || AW_HAS(AW_F_TRAJECTORIES)) fx->e0 = aw_energy(s, rp);
   aw_tangent_begin(&fx->tangent, rp); /* a few stores; every field defined for the run-time bits of the cpu backend */
   for (int c = 0; c < 3; ++c) fx->asum[c] = AW_LSPLAT(AW_R(0.0));
   if (AW_HAS(AW_F_DIFFUSION)) aw_actions_store(s->px, s->py, s->pz, 0, l, ip, out);
+  if (AW_HAS(AW_F_TRAJECTORIES)) aw_trajectories_store(s, AW_LSPLAT(AW_R(0.0)), 0, l, ip, out);
 }
 
 /* The force at the initial state (and, with the indicators, the Hessian). */
@@ -77,6 +81,7 @@ AW_FN void aw_fx_counts_begin(aw_config cfg, aw_fx* fx, aw_i64 seg_first, AW_CON
   if (AW_HAS(AW_F_ENERGY)) fx->energy_at = aw_count_at(seg_first, ip->energy_stride);
   if (AW_HAS(AW_F_FREQUENCIES)) fx->frequency_at = aw_count_at(seg_first, ip->frequency_stride);
   if (AW_HAS(AW_F_DIFFUSION)) fx->actions_at = aw_count_at(seg_first, ip->diffusion_stride);
+  if (AW_HAS(AW_F_TRAJECTORIES)) fx->picks_at = aw_count_at(seg_first, ip->pick_stride);
 }
 
 AW_FN void aw_fx_window_begin(aw_config cfg, aw_fx* fx) { fx->over = AW_LSPLAT(AW_R(0.0)); }
@@ -98,6 +103,11 @@ AW_FN void aw_fx_sample(aw_config cfg, aw_fx* fx, const aw_lstate* s, aw_lanes l
   if (AW_HAS(AW_F_DIFFUSION)) {
     aw_count_next(&fx->actions_at, ip->diffusion_stride);
     aw_actions_sample(fx->asum, s, fx->actions_at, l, rp, ip, out);
+  }
+  if (AW_HAS(AW_F_TRAJECTORIES)) {
+    aw_count_next(&fx->picks_at, ip->pick_stride);
+    if (fx->picks_at.r == 0 && fx->picks_at.q <= ip->pick_samples)
+      aw_trajectories_store(s, aw_energy(s, rp) - fx->e0, fx->picks_at.q, l, ip, out);
   }
 }
 

@@ -136,6 +136,7 @@ std::vector<std::string> record_files(const Result& result);
 struct OutputLocation {
   std::string output, file, group;    // e.g. "final_states", "states.h5", "final"
   std::vector<std::string> datasets;  // every dataset the row can write
+  bool per_trajectory = true;         // a row per trajectory (else of picked ones: trajectories.h5)
 };
 std::vector<OutputLocation> output_locations();
 

@@ -62,6 +62,11 @@ struct RunOptions {
 // Run every trajectory of the plan. Chunks are a partition of the index range,
 // so the result does not depend on how it is split. Throws DeviceError.
 Result run(const Plan& plan, Backend& backend, const RunOptions& options = {});
+// Run only trajectories [first, first + count) of the plan, each with the bits
+// it has in a run of all (`arnoldweb orbit`): the result holds their outputs
+// (completed = count; the maps and counts are theirs). Not in time slices.
+Result run_range(const Plan& plan, Backend& backend, std::uint64_t first, std::uint64_t count,
+                 const RunOptions& options = {});
 
 // ------------------------------------------------------------------ jobs
 struct JobResult {

@@ -150,6 +150,14 @@ struct Scene {
   // every `average_every` T (0: the actions at the sample time)
   double diffusion_average = 0;
   double diffusion_average_every = 1.0;
+  // observe.trajectories: the sampled states of chosen trajectories every
+  // `every` T (trajectories.h5): `ids`, or the first `count` (neither: off)
+  std::vector<std::int64_t> trajectory_ids;
+  std::int64_t trajectory_count = 0;
+  double trajectory_every = 1.0;
+  bool samples_trajectories() const { return !trajectory_ids.empty() || trajectory_count > 0; }
+  // the ids observe.trajectories picks, increasing
+  std::vector<std::int64_t> picked_trajectories() const;
 
   // [output]
   std::string output_dir = "out";

@@ -89,6 +89,8 @@ Scene pilot_scene(const Scene& s, const std::string& method, double step, std::u
   p.switches.clear();
   p.frequencies = false;
   p.diffusion = false;
+  p.trajectory_ids.clear();
+  p.trajectory_count = 0;
   p.slice = 0;
   p.panels.clear();
   return p;

@@ -66,6 +66,7 @@ const std::vector<std::string>& continue_keys() {
         "ensemble.chunk",       "observe.velocity_map", "observe.energy_error", "observe.initial_states",
         "observe.final_states", "observe.zoom",         "observe.frames",    "observe.fli",
         "observe.lyapunov",     "observe.tangent_initial", "observe.frequencies", "observe.diffusion",
+        "observe.trajectories",
         "output.dir",           "output.images"};
     for (const detail::OutputSwitch* w : detail::output_switches()) k.push_back(w->key);
     return k;

@@ -6,6 +6,7 @@
 
 #include "arnoldweb/output.hpp"
 #include "output_table/output_table.hpp"
+#include "plan/plan_params.hpp"
 
 namespace arnoldweb {
 namespace {
@@ -70,7 +71,9 @@ std::vector<OutputDataset> output_datasets(const Plan& plan, const Result& r) {
   for (const RecordOutput& row : detail::record_outputs()) {
     const Records* rec = r.records_of(row.name);
     if (!rec) continue;
-    std::vector<std::uint64_t> dims = row.grid_shaped ? grid_shape(plan.scene, rec->count()) : std::vector<std::uint64_t>{};
+    std::vector<std::uint64_t> dims = row.picked        ? row.picked(detail::params(plan).ints)
+                                      : row.grid_shaped ? grid_shape(plan.scene, rec->count())
+                                                        : std::vector<std::uint64_t>{};
     if (dims.empty()) dims = {rec->count()};
     for (const RecordDataset& d : row.datasets)
       if (!d.feature || (plan.kernel.features & d.feature)) out.push_back(dataset(row, *rec, d, dims));

@@ -11,6 +11,7 @@
 #include "output/atomic_file.hpp"
 #include "output/h5_writer.hpp"
 #include "output_table/output_table.hpp"
+#include "plan/plan_params.hpp"
 
 namespace arnoldweb {
 namespace {
@@ -74,9 +75,19 @@ void plan_attribute(H5Writer& h, hid_t where, const std::string& name, const Pla
     h.attr(where, "samples", static_cast<std::int64_t>(plan.scene.frequency_samples));
     h.attr(where, "every", plan.scene.frequency_every);
     h.attr(where, "window_order", static_cast<std::int64_t>(plan.scene.frequency_window));
-  } else if (name == "diffusion_every")
+  } else if (name == "diffusion_every") {
     h.attr(where, "every", plan.scene.diffusion_every);
-  else
+  } else if (name == "trajectory_samples") {  // which trajectories, when (observe.trajectories)
+    const std::vector<std::int64_t> ids = plan.scene.picked_trajectories();
+    std::vector<double> t(static_cast<std::size_t>(detail::params(plan).ints.pick_samples) + 1);
+    for (std::size_t q = 0; q < t.size(); ++q)
+      t[q] = plan.start_time() + static_cast<double>(q) * plan.scene.trajectory_every;
+    h.attr(h.dataset(where, "ids", H5T_NATIVE_INT64, {ids.size()}, ids.data()), "meaning",
+           std::string("the trajectory (index in the ensemble) of each row"));
+    h.attr(h.dataset(where, "time", H5T_NATIVE_DOUBLE, {t.size()}, t.data()), "meaning",
+           std::string("the time of each sample, in T"));
+    h.attr(where, "every", plan.scene.trajectory_every);
+  } else
     throw OutputError(name, "the output table names an attribute the writer does not know");
 }
 
@@ -107,7 +118,7 @@ std::vector<OutputLocation> output_locations() {
   std::vector<OutputLocation> out;
   for (const RecordOutput& row : detail::record_outputs()) {
     if (row.internal()) continue;
-    OutputLocation o{row.name, row.file, row.group, {}};
+    OutputLocation o{row.name, row.file, row.group, {}, !row.picked};
     for (const auto& d : row.datasets) o.datasets.push_back(d.name);
     out.push_back(std::move(o));
   }

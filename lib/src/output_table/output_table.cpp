@@ -56,6 +56,20 @@ const std::vector<RecordOutput>& record_outputs() {
        "the actions of every trajectory at every sample time (observe.diffusion; the moments and D: diffusion.csv, "
        "summary.json)",
        {"diffusion_every"}},
+      {"trajectories", AW_OUT_TRAJECTORIES, AW_F_TRAJECTORIES, fixed(AW_PICK_REALS), fixed(AW_PICK_INTS),
+       "trajectories.h5", "", false,
+       {{"position_turns", false, 0, 3, "position in turns (wrapped to [-1/2, 1/2]): shape (ids, samples, 3)"},
+        {"winding", true, 0, 3, "winding counts of the position: shape (ids, samples, 3)"},
+        {"position", false, 0, 3, "2 pi (winding + position_turns): unwrapped, in radians", 0, true},
+        {"momentum", false, 3, 3, "momentum P: shape (ids, samples, 3)"},
+        {"energy_error", false, 6, 1, "E(t) - E(0): shape (ids, samples)"}},
+       "the state and energy error of chosen trajectories (observe.trajectories ids) at t = 0, every, 2 every, ...",
+       {"trajectory_samples"},
+       {},
+       [](const IntParams& ip) {
+         return std::vector<std::uint64_t>{static_cast<std::uint64_t>(ip.pick_count),
+                                           static_cast<std::uint64_t>(ip.pick_samples + 1)};
+       }},
       // internal (no file): the state between two launches (open runs), in checkpoints only
       {"carry", AW_OUT_CARRY, AW_F_CARRY, fixed(AW_CARRY_REALS), fixed(AW_CARRY_INTS), "", "", false, {},
        "a trajectory's whole state between two time slices, or the state it starts from (ensemble.initial = "
@@ -102,6 +116,7 @@ void lay_out_records(std::uint32_t features, IntParams& ip) {
   ip.rec_reals = 0;
   ip.rec_ints = 0;
   for (const RecordOutput* r : records_written(features)) {
+    if (r->picked) continue;
     ip.rec_col_r[r->slot] = ip.rec_reals;
     ip.rec_col_i[r->slot] = ip.rec_ints;
     ip.rec_width_r[r->slot] = r->reals(ip);
@@ -109,6 +124,22 @@ void lay_out_records(std::uint32_t features, IntParams& ip) {
     ip.rec_reals += ip.rec_width_r[r->slot];
     ip.rec_ints += ip.rec_width_i[r->slot];
   }
+}
+
+std::uint64_t picked_records(const RecordOutput& row, const IntParams& ip) {
+  std::uint64_t n = 1;
+  for (std::uint64_t d : row.picked(ip)) n *= d;
+  return n;
+}
+
+std::uint64_t lay_out_picked(std::uint32_t features, std::uint64_t hist_words, IntParams& ip) {
+  ip.pick_base = static_cast<std::int64_t>((hist_words + 1) / 2 * 2);
+  std::uint64_t end = hist_words;
+  for (const RecordOutput* r : records_written(features))
+    if (r->picked)  // two words a value
+      end = static_cast<std::uint64_t>(ip.pick_base) +
+            2 * picked_records(*r, ip) * static_cast<std::uint64_t>(r->reals(ip) + r->ints(ip));
+  return end;
 }
 
 }  // namespace arnoldweb::detail

@@ -33,6 +33,8 @@ namespace arnoldweb::detail {
 // Columns per trajectory of a row: a number, or one the plan decides (from its
 // integer parameters: e.g. one action vector per sample time).
 using Width = std::function<int(const IntParams& ip)>;
+// The shape of a picked row's records (RecordOutput::picked), from the plan.
+using Shape = std::function<std::vector<std::uint64_t>(const IntParams& ip)>;
 inline Width fixed(int n) {
   return [n](const IntParams&) { return n; };
 }
@@ -82,6 +84,12 @@ struct RecordOutput {
   // attributes of the file's root taken from the plan ("duration", "tangent_initial")
   std::vector<std::string> attributes = {};
   std::vector<OutputSwitch> switches = {};  // the boolean keys that ask for it
+  // Picked (not per trajectory): records of a few chosen trajectories, `shape`
+  // of them (e.g. picks x samples), `reals` and `ints` columns each, in the
+  // histogram buffer after the maps (aw_params.h, "Picked records"): their
+  // memory is the picks', not the ensemble's, and they take no columns of the
+  // trajectories' records. Their datasets have the records' shape.
+  Shape picked = nullptr;
   // Kept between launches only (checkpoints), never a result: no file.
   bool internal() const { return file.empty(); }
 };
@@ -101,5 +109,11 @@ std::vector<const RecordOutput*> records_reported(std::uint32_t features);
 // rec_col_r, rec_col_i, rec_width_r, rec_width_i): one row after the other, in
 // table order. The widths may depend on the other integer parameters: fill them first.
 void lay_out_records(std::uint32_t features, IntParams& ip);
+// The picked rows' records (RecordOutput::picked) of a kernel with these
+// features and their 32-bit words in the histogram buffer: they start at the
+// even word at or after `hist_words` (ip.pick_base); returns the buffer's new
+// size in words. (One picked row at a time: the device reads one ip.pick_base.)
+std::uint64_t picked_records(const RecordOutput& row, const IntParams& ip);
+std::uint64_t lay_out_picked(std::uint32_t features, std::uint64_t hist_words, IntParams& ip);
 
 }  // namespace arnoldweb::detail

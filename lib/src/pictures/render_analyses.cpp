@@ -9,6 +9,10 @@
 //                     fitted line sigma0^2 + 2 D t, D with its error bar, and
 //                     the growth's linearity: the halves' D, the exponent
 //                     alpha (in red where the fit is not diffusive).
+//  trajectories.png   the picked orbits (observe.trajectories): each one's
+//                     momentum in action space (p_x, p_y), its direction on
+//                     the sphere (longitude, latitude of P / |P|), and
+//                     log10 |E(t) - E(0)| against t.
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -19,6 +23,7 @@
 #include "pictures/drawing.hpp"
 #include "pictures/canvas.hpp"
 #include "pictures/indicator_pictures.hpp"
+#include "plan/plan_params.hpp"
 
 namespace arnoldweb::detail {
 namespace {
@@ -181,6 +186,61 @@ void render_diffusion(const Plan& plan, const Result& r, const nlohmann::json& j
   c.save(path);
 }
 
+// The colour of orbit k of n.
+std::array<double, 3> orbit_colour(std::size_t k, std::size_t n) {
+  const double hue = n > 1 ? static_cast<double>(k) / static_cast<double>(n - 1) : 0.0;
+  return {0.3 + 0.65 * hue, 0.85 - 0.45 * hue, 1.0 - 0.7 * hue};
+}
+
+// The picked orbits as curves (x, y): `samples` values of each, one orbit after the other.
+void orbit_panel(Canvas& c, double x0, double y0, double w, double h, std::size_t samples, const std::vector<double>& x,
+                 const std::vector<double>& y, const std::string& x_label, const std::string& y_label) {
+  const std::array<double, 2> rx = quantile_range(x, 0), ry = quantile_range(y, 0);
+  frame(c, x0, y0, w, h, rx, ry, x_label, y_label);
+  cairo_save(c.cr());
+  cairo_rectangle(c.cr(), x0, y0, w, h);
+  cairo_clip(c.cr());
+  cairo_set_line_width(c.cr(), 1.5);
+  const std::size_t picks = x.size() / samples;
+  for (std::size_t k = 0; k < picks; ++k) {
+    const std::array<double, 3> colour = orbit_colour(k, picks);
+    cairo_set_source_rgb(c.cr(), colour[0], colour[1], colour[2]);
+    const auto from = static_cast<std::ptrdiff_t>(k * samples), to = from + static_cast<std::ptrdiff_t>(samples);
+    curve(c, x0, y0, w, h, rx, ry, std::vector<double>(x.begin() + from, x.begin() + to),
+          std::vector<double>(y.begin() + from, y.begin() + to));
+  }
+  cairo_restore(c.cr());
+}
+
+void render_trajectories(const Plan& plan, const Result& r, const Records& rec, const std::string& path) {
+  const auto samples = static_cast<std::size_t>(params(plan).ints.pick_samples) + 1;
+  const double every = plan.scene.trajectory_every;
+  std::vector<double> px, py, lon, lat, t, de;
+  for (std::size_t m = 0; m < rec.count(); ++m) {
+    const double* v = &rec.reals[m * rec.reals_per];
+    const double norm = std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
+    px.push_back(v[3]), py.push_back(v[4]);
+    lon.push_back(std::atan2(v[4], v[3]) * 180 / M_PI), lat.push_back(std::asin(v[5] / norm) * 180 / M_PI);
+    t.push_back(static_cast<double>(m % samples) * every);
+    de.push_back(std::log10(std::fabs(v[6])));
+  }
+  const int w = 1800, h = 640;
+  Canvas c(w, h);
+  orbit_panel(c, 110, 70, 440, 440, samples, px, py, "p_x", "p_y");
+  orbit_panel(c, 700, 70, 440, 440, samples, lon, lat, "longitude of P (degrees)", "latitude of P (degrees)");
+  orbit_panel(c, 1290, 70, 440, 440, samples, t, de, "t (T)", "log10 |E(t) - E(0)|");
+  const std::vector<std::int64_t> ids = plan.scene.picked_trajectories();
+  c.text(20, 28, "orbits of " + std::to_string(ids.size()) + " trajectories, every " + fmt(every) + " T   " +
+                     picture_title(plan), 15);
+  for (std::size_t k = 0; k < ids.size() && k < 40; ++k) {  // which colour is which trajectory
+    const std::array<double, 3> colour = orbit_colour(k, ids.size());
+    c.text(110 + 110.0 * static_cast<double>(k % 15), h - 56 + 16.0 * static_cast<double>(k / 15),
+           "#" + std::to_string(ids[k]), 12, colour[0], colour[1], colour[2]);
+  }
+  c.text(20, h - 12, picture_caption(r), 11, 0.7, 0.7, 0.7);
+  c.save(path);
+}
+
 }  // namespace
 
 void write_analysis_pictures(const Plan& plan, const Result& r, const std::string& dir,
@@ -193,6 +253,10 @@ void write_analysis_pictures(const Plan& plan, const Result& r, const std::strin
                          "diffusion index log10 ||nu(2)| - |nu(1)||");
       names.push_back("diffusion_index.png");
     }
+  }
+  if (const Records* rec = r.records_of("trajectories"); rec && rec->count() > 0) {
+    render_trajectories(plan, r, *rec, dir + "/trajectories.png");
+    names.push_back("trajectories.png");
   }
   if (const auto it = r.analyses.find("diffusion"); it != r.analyses.end()) {
     const nlohmann::json j = nlohmann::json::parse(it->second);

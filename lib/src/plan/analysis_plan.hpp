@@ -1,8 +1,9 @@
 // arnoldweb: the planner's part for the analyses of trajectories over time
 // (docs/frequencies.md): the frequency analysis (observe.frequencies: two
 // windows of samples, their work memory) and the action samples of the
-// diffusion coefficient (observe.diffusion): their checks against the
-// schedule and their parameters in the kernels' blocks.
+// diffusion coefficient (observe.diffusion), and the sampled states of picked
+// trajectories (observe.trajectories): their checks against the schedule and
+// their parameters in the kernels' blocks.
 #pragma once
 
 #include "arnoldweb/plan.hpp"

@@ -40,6 +40,7 @@ const std::vector<EffectRow>& effects() {
       {"lyapunov", AW_F_LYAPUNOV, [](const Scene& s) { return s.lyapunov; }},
       {"frequencies", AW_F_FREQUENCIES, [](const Scene& s) { return s.frequencies; }},
       {"diffusion", AW_F_DIFFUSION, [](const Scene& s) { return s.diffusion; }},
+      {"trajectories", AW_F_TRAJECTORIES, [](const Scene& s) { return s.samples_trajectories(); }},
       // states from a file (ensemble.initial = "file"); time slices add it when planned (plan.cpp)
       {"carry", AW_F_CARRY, [](const Scene& s) { return s.initial == "file"; }},
   });

@@ -200,6 +200,7 @@ Plan make_plan(const Scene& scene_as_written, const PlanInputs& inputs) {
   plan_histograms(scene, p);
   fill_reals(scene, p, params->reals);
   fill_ints(scene, p, params->ints);
+  p.hist_size = detail::lay_out_picked(p.kernel.features, p.hist_size, params->ints);  // observe.trajectories
   detail::plan_guard(scene, model, *params, p);  // may draw initial states: after the blocks are filled
   // a run that asks for pictures where none can be drawn computes and writes the rest
   if (scene.images && !inputs.no_pictures.empty())

@@ -2,6 +2,7 @@
 #include "run/reduction.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 #include <utility>
 
@@ -34,8 +35,8 @@ std::vector<Records> empty_records(const Plan& plan) {
   for (const RecordOutput* row : records_reported(plan.kernel.features)) {
     Records& out = records.emplace_back();
     out.name = row->name;
-    out.reals_per = static_cast<std::size_t>(ip.rec_width_r[row->slot]);
-    out.ints_per = static_cast<std::size_t>(ip.rec_width_i[row->slot]);
+    out.reals_per = static_cast<std::size_t>(row->picked ? row->reals(ip) : ip.rec_width_r[row->slot]);
+    out.ints_per = static_cast<std::size_t>(row->picked ? row->ints(ip) : ip.rec_width_i[row->slot]);
   }
   return records;
 }
@@ -45,9 +46,47 @@ void append_records(const Plan& plan, const std::vector<double>& reals, const st
   const IntParams& ip = params(plan).ints;
   std::size_t k = 0;
   for (const RecordOutput* row : records_reported(plan.kernel.features)) {
+    if (row->picked) {  // not in the trajectories' records (picked_from_words)
+      ++k;
+      continue;
+    }
     columns(reals, ip.rec_reals, ip.rec_col_r[row->slot], static_cast<int>(ip.rec_width_r[row->slot]), records.at(k).reals);
     columns(ints, ip.rec_ints, ip.rec_col_i[row->slot], static_cast<int>(ip.rec_width_i[row->slot]), records.at(k).ints);
     ++k;
+  }
+}
+
+void picked_from_words(const Plan& plan, const std::vector<std::uint64_t>& words, std::vector<Records>& records) {
+  const IntParams& ip = params(plan).ints;
+  const bool single = plan.kernel.precision == Precision::Float;
+  for (Records& rec : records) {
+    const RecordOutput* row = find_record_output(rec.name);
+    if (!row || !row->picked) continue;
+    const std::uint64_t n = picked_records(*row, ip), per = rec.reals_per + rec.ints_per;
+    rec.reals.assign(n * rec.reals_per, 0.0);
+    rec.ints.assign(n * rec.ints_per, 0);
+    const std::uint64_t base = static_cast<std::uint64_t>(ip.pick_base);
+    if (words.size() < base + 2 * n * per) continue;  // no launch yet
+    // a value's two words (each the sum of one launch's word and zeros: its bits)
+    auto bits = [&](std::uint64_t at) { return (words[at] & 0xffffffffu) | (words[at + 1] << 32); };
+    for (std::uint64_t m = 0; m < n; ++m) {
+      const std::uint64_t at = base + 2 * per * m;
+      for (std::size_t c = 0; c < rec.reals_per; ++c) {
+        const std::uint64_t b = bits(at + 2 * c);
+        double v;
+        if (single) {
+          float f;
+          const auto lo = static_cast<std::uint32_t>(b);
+          std::memcpy(&f, &lo, sizeof f);
+          v = f;
+        } else {
+          std::memcpy(&v, &b, sizeof v);
+        }
+        rec.reals[m * rec.reals_per + c] = v;
+      }
+      for (std::size_t c = 0; c < rec.ints_per; ++c)
+        rec.ints[m * rec.ints_per + c] = static_cast<std::int64_t>(bits(at + 2 * (rec.reals_per + c)));
+    }
   }
 }
 
@@ -178,7 +217,12 @@ std::vector<IndexRange> Reduction::pending() const {
     at = end;
   }
   if (at < plan_->scene.trajectories) p.push_back({at, plan_->scene.trajectories - at});
-  return p;
+  std::vector<IndexRange> within;  // p within [only_first_, only_end_)
+  for (const IndexRange& r : p) {
+    const std::uint64_t first = std::max(r.first, only_first_), end = std::min(r.end(), only_end_);
+    if (first < end) within.push_back({first, end - first});
+  }
+  return within;
 }
 
 Result Reduction::result() const {
@@ -205,10 +249,12 @@ Result Reduction::result() const {
       if (plan_->frames > 1) r.frames.emplace_back(first, first + static_cast<std::ptrdiff_t>(npix));
       for (std::uint64_t i = 0; i < npix; ++i) r.map[i] += first[static_cast<std::ptrdiff_t>(i)];
     }
-    r.zoom.assign(histograms_.begin() + static_cast<std::ptrdiff_t>(plan_->frames * npix), histograms_.end());
+    const auto zoom = histograms_.begin() + static_cast<std::ptrdiff_t>(plan_->frames * npix);
+    r.zoom.assign(zoom, zoom + static_cast<std::ptrdiff_t>(plan_->zoom_resolution) * plan_->zoom_resolution);
   }
   r.records = empty_records(*plan_);
   for (const auto& [first, chunk] : records_) append_records(*plan_, chunk.reals, chunk.ints, r.records);
+  picked_from_words(*plan_, histograms_, r.records);
   r.chunks = chunks;
   r.wall_seconds = seconds;
   return r;

@@ -42,6 +42,8 @@ struct IndexRange {
 std::vector<Records> empty_records(const Plan& plan);
 void append_records(const Plan& plan, const std::vector<double>& reals, const std::vector<std::int64_t>& ints,
                     std::vector<Records>& records);
+// The picked rows' records (RecordOutput::picked) from the histogram buffer's words.
+void picked_from_words(const Plan& plan, const std::vector<std::uint64_t>& words, std::vector<Records>& records);
 
 // The block of trajectories a time-sliced plan runs per launch.
 std::uint64_t slice_block(const Plan& plan);
@@ -73,8 +75,10 @@ class Reduction {
 
   std::uint64_t completed() const { return completed_; }
   bool complete() const { return completed_ == plan_->scene.trajectories; }
-  // The ranges of [0, N) not done yet, in order.
+  // The ranges of [0, N) not done yet, in order (within `only`, if restricted).
   std::vector<IndexRange> pending() const;
+  // Runs only trajectories `only` (run_range).
+  void restrict_to(const IndexRange& only) { only_first_ = only.first, only_end_ = only.end(); }
   // Wall seconds of computing recorded so far (resumed runs add theirs).
   double seconds = 0;
   std::vector<std::uint64_t> chunks;  // sizes of the launches, in the order they were added
@@ -92,6 +96,7 @@ class Reduction {
   void mark_done(std::uint64_t first, std::uint64_t count);
   const Plan* plan_;
   std::uint64_t completed_ = 0;
+  std::uint64_t only_first_ = 0, only_end_ = ~0ull;  // the trajectories to run (all)
   std::map<std::uint64_t, std::uint64_t> done_;  // first -> end, disjoint, not adjacent
   std::vector<std::uint64_t> counters_;  // AW_C_COUNT
   double emax_ = 0;

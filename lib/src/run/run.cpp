@@ -3,6 +3,8 @@
 // (reduction.hpp).
 #include "arnoldweb/run.hpp"
 
+#include <stdexcept>
+
 #include "run/chunk_loop.hpp"
 #include "run/analyses.hpp"
 #include "run/part_run.hpp"
@@ -46,6 +48,19 @@ void require_states(const Plan& plan) {
 
 Result run(const Plan& plan, Backend& backend, const RunOptions& options) {
   detail::Reduction reduction(plan);
+  return detail::run_part(plan, backend, options, reduction, {});
+}
+
+Result run_range(const Plan& plan, Backend& backend, std::uint64_t first, std::uint64_t count,
+                 const RunOptions& options) {
+  if (count == 0 || first >= plan.scene.trajectories || count > plan.scene.trajectories - first)
+    throw std::invalid_argument("run_range: trajectories [" + std::to_string(first) + ", " +
+                                std::to_string(first + count) + ") are not a range of the plan's " +
+                                std::to_string(plan.scene.trajectories));
+  if (plan.slices > 1)
+    detail::fail_at(plan.scene, "run.slice", "a run of some trajectories runs them whole: set run.slice = 0");
+  detail::Reduction reduction(plan);
+  reduction.restrict_to({first, count});
   return detail::run_part(plan, backend, options, reduction, {});
 }
 

@@ -33,6 +33,13 @@ bool Scene::writes_format(const std::string& f) const {
   return std::find(formats.begin(), formats.end(), f) != formats.end();
 }
 
+std::vector<std::int64_t> Scene::picked_trajectories() const {
+  std::vector<std::int64_t> ids = trajectory_ids;
+  for (std::int64_t k = 0; k < trajectory_count; ++k) ids.push_back(k);
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
 std::string Scene::origin(const std::string& key) const {
   const SourcePos p = pos(key);
   if (p.set_index > 0 && static_cast<std::size_t>(p.set_index) <= overrides.size()) {

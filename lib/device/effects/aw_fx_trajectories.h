@@ -1,0 +1,60 @@
+/* arnoldweb effect "trajectories" (observe.trajectories): the state and the
+ * energy error E(t) - E(0) of a few picked trajectories at t = 0 and at the
+ * end of every ip->pick_stride segments, as picked records (aw_params.h: in
+ * the histogram buffer, indexed by the pick, so that their memory is the
+ * picks' and not the ensemble's). A lane writes only when its trajectory is
+ * one of ip->pick_ids (increasing: a binary search, at sample times only). */
+#ifndef AW_FX_TRAJECTORIES_H
+#define AW_FX_TRAJECTORIES_H
+
+#include "aw_model.h"
+#include "effects/aw_fx_common.h"
+
+/* The position of trajectory g among the picks, or -1. */
+AW_FN aw_i64 aw_pick_of(AW_CONSTANT aw_iparams* ip, aw_u64 g) {
+  aw_i64 lo = 0, hi = ip->pick_count; /* the pick, if any, is in [lo, hi) */
+  while (lo < hi) {
+    const aw_i64 mid = lo + (hi - lo) / 2;
+    const aw_u64 v = (aw_u64)ip->pick_ids[mid];
+    if (v == g) return mid;
+    if (v < g)
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return -1;
+}
+
+/* Sample q (0: t = 0) of the lanes that are picked: state s, energy error
+ * e - e0. */
+AW_FN void aw_trajectories_store(const aw_lstate* s, lreal de, aw_i64 q, aw_lanes l, AW_CONSTANT aw_iparams* ip,
+                                 aw_outputs out) {
+  real r[AW_PICK_REALS][AW_LANES];
+  aw_i64 w[AW_PICK_INTS][AW_LANES];
+  int stored = 0;
+  for (int j = 0; j < AW_LANES; ++j) {
+    if (!AW_LANE_ACTIVE(l, j)) continue;
+    const aw_i64 k = aw_pick_of(ip, l.first + (aw_u64)j);
+    if (k < 0) continue;
+    if (!stored) { /* the lanes' values, once per work-item and sample */
+      AW_STORE_LANES(s->ux, r[0]);
+      AW_STORE_LANES(s->uy, r[1]);
+      AW_STORE_LANES(s->uz, r[2]);
+      AW_STORE_LANES(s->px, r[3]);
+      AW_STORE_LANES(s->py, r[4]);
+      AW_STORE_LANES(s->pz, r[5]);
+      AW_STORE_LANES(de, r[6]);
+      AW_STORE_ILANES(s->wx, w[0]);
+      AW_STORE_ILANES(s->wy, w[1]);
+      AW_STORE_ILANES(s->wz, w[2]);
+      stored = 1;
+    }
+    /* two words per value: a real in the low word's place (its own size), an integer in both */
+    AW_GLOBAL aw_u32* at =
+        out.hist + (aw_u64)ip->pick_base + (aw_u64)(2 * (AW_PICK_REALS + AW_PICK_INTS)) * (aw_u64)(k * (ip->pick_samples + 1) + q);
+    for (int c = 0; c < AW_PICK_REALS; ++c) *(AW_GLOBAL real*)(at + 2 * c) = r[c][j];
+    for (int c = 0; c < AW_PICK_INTS; ++c) *(AW_GLOBAL aw_i64*)(at + 2 * (AW_PICK_REALS + c)) = w[c][j];
+  }
+}
+
+#endif /* AW_FX_TRAJECTORIES_H */
