@@ -51,16 +51,17 @@ class Orbit:
         (T), shape (W,), and ``nu`` in turns per T, shape (W, 3), or (n, W, 3) for several
         trajectories.
 
-        Each is the frequency of the largest term of the angle's signal exp(i X(t)), as
-        observe.frequencies finds it (docs/frequencies.md): Laskar's window chi_p of order
-        ``window`` (1: Hanning, 0 to 4), the highest peak of the windowed samples' FFT (padded to
-        at least twice the window), refined by Newton steps on the windowed transform to
-        round-off, and of its aliases (every ``every`` T) the one nearest the angle's mean rate
-        over the window. For a rotating angle that is its rate of rotation; for a librating one
+        Each is the frequency of the largest term of the angle's signal exp(i X(t)), the
+        maximum observe.frequencies finds (docs/frequencies.md), in numpy: under Laskar's window
+        chi_p of order ``window`` (1: Hanning, 0 to 4), the highest peak of the windowed samples'
+        FFT (padded to at least twice the window), refined by Newton steps on the windowed
+        transform to round-off, and of its aliases (every ``every`` T) the one nearest the
+        angle's mean rate over the window (two maxima less than a bin apart: either may win). For a rotating angle that is its rate of rotation; for a librating one
         a harmonic of the libration about the centre's rate (docs/frequencies.md, "Limits").
         observe.frequencies' first window is samples 1 to ``samples`` of an orbit sampled at its
         interval (``step=1``: window 1), the second the next ``samples``: their nu_first and
-        nu_second are these to round-off (pytest ``test_orbit_frequencies``). A window of a
+        nu_second are these to round-off (pytest
+        ``test_orbit_frequencies_are_those_of_observe_frequencies``). A window of a
         flagged trajectory (not finite) gives NaN. Raises ValueError naming the argument and its
         allowed range."""
         n = _whole("samples", samples, 16, self.t.size, f"the orbit's {self.t.size} samples")
