@@ -42,7 +42,6 @@ class Orbit:
         return (f"Orbit(ids={self.ids.tolist()}, samples={self.t.size}, every={self.t[1] if self.t.size > 1 else 0:g} T, "
                 f"max |dE|={float(np.max(np.abs(self.dE))):.3g})")
 
-
     def frequencies(self, samples: int, step: Optional[int] = None,
                     window: int = 1) -> Tuple[np.ndarray, np.ndarray]:
         """The leading frequency of each angle over sliding windows of ``samples`` samples, the
@@ -56,22 +55,28 @@ class Orbit:
         chi_p of order ``window`` (1: Hanning, 0 to 4), the highest peak of the windowed samples'
         FFT (padded to at least twice the window), refined by Newton steps on the windowed
         transform to round-off, and of its aliases (every ``every`` T) the one nearest the
-        angle's mean rate over the window (two maxima less than a bin apart: either may win). For a rotating angle that is its rate of rotation; for a librating one
-        a harmonic of the libration about the centre's rate (docs/frequencies.md, "Limits").
+        angle's mean rate over the window (two maxima less than a bin apart: either may win).
+        For a rotating angle that is its rate of rotation; for a librating one a harmonic of
+        the libration about the centre's rate (docs/frequencies.md, "Limits").
         observe.frequencies' first window is samples 1 to ``samples`` of an orbit sampled at its
         interval (``step=1``: window 1), the second the next ``samples``: their nu_first and
         nu_second are these to round-off (pytest
         ``test_orbit_frequencies_are_those_of_observe_frequencies``). A window of a
         flagged trajectory (not finite) gives NaN. Raises ValueError naming the argument and its
-        allowed range."""
-        n = _whole("samples", samples, 16, self.t.size, f"the orbit's {self.t.size} samples")
-        step = _whole("step", n if step is None else step, 1, None, None)
-        p = _whole("window", window, 0, 4, None)
+        allowed range, TypeError where it is not a whole number."""
+        n = _in_range("samples", samples, 16, self.t.size, f" (the orbit's {self.t.size} samples)")
+        step = _in_range("step", n if step is None else step, 1, None)
+        p = _in_range("window", window, 0, 4)
         every = float(self.t[1])
-        angles = np.moveaxis(self.X, -1, -2)  # (..., 3, S + 1)
-        windows = np.lib.stride_tricks.sliding_window_view(angles, n, axis=-1)[..., ::step, :]
-        nu = np.moveaxis(_leading_frequencies(windows, p), -2, -1) / every  # (..., W, 3)
-        starts = np.arange(windows.shape[-2]) * step
+        series = np.moveaxis(self.X, -1, -2).reshape(-1, self.t.size)  # (trajectories x 3 angles, S + 1)
+        starts = np.arange(0, self.t.size - n + 1, step)
+        chunk = max(1, (1 << 20) // (n * len(series)))  # windows at a time: ~16 MiB of complex samples
+        parts = []
+        for first in np.split(starts, range(chunk, len(starts), chunk)):
+            q = series[:, first[:, None] + np.arange(n)]  # (trajectories x 3, windows, n)
+            parts.append(_leading_frequencies(q.reshape(-1, n), p).reshape(len(series), -1))
+        nu = np.concatenate(parts, axis=1)  # (trajectories x 3, W)
+        nu = np.moveaxis(nu.reshape(self.X.shape[:-2] + (3, len(starts))), -2, -1) / every  # (..., W, 3)
         return self.t[starts] + (n - 1) / 2 * every, nu
 
     def plot_frequencies(self, samples: int, step: Optional[int] = None, window: int = 1, ax=None):
@@ -92,21 +97,18 @@ class Orbit:
             ax.plot(t, nu[:, d], ".-", label=f"$\\nu_{name}$")
         ax.set_xlabel("t (T), the window's centre")
         ax.set_ylabel("frequency (turns per T)")
-        ax.set_title(f"frequencies over windows of {samples} samples ({samples * float(self.t[1]):g} T)")
+        ax.set_title(f"frequencies over windows of {samples:g} samples ({samples * float(self.t[1]):g} T)")
         ax.legend()
         return ax
 
 
-def _whole(name: str, value, low: int, high: Optional[int], what: Optional[str]) -> int:
-    """``value`` as an int in [low, high] (high None: no bound), else ValueError naming ``name``."""
-    allowed = f"{low} to {high}" + (f" ({what})" if what else "") if high is not None else f">= {low}"
-    try:
-        whole = int(value)
-        if whole != value:
-            raise ValueError
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} = {value!r}: a whole number is needed, {allowed}") from None
+def _in_range(name: str, value, low: int, high: Optional[int], what: str = "") -> int:
+    """An integer argument (as the package's: a float with a whole value too; TypeError
+    otherwise) in [low, high] (high None: no bound), else ValueError naming it and the range."""
+    from . import _whole_number  # (the package's __init__ imports this module first)
+    whole = _whole_number(value, name)
     if whole < low or (high is not None and whole > high):
+        allowed = f"{low} to {high}{what}" if high is not None else f">= {low}"
         raise ValueError(f"{name} = {whole}: outside the allowed range, {allowed}")
     return whole
 
@@ -114,14 +116,13 @@ def _whole(name: str, value, low: int, high: Optional[int], what: Optional[str])
 _NEWTON_PASSES = 40  # as AW_NAFF_MAX_ITER; round-off is reached in 2-3 from the FFT's peak
 
 
-def _leading_frequencies(angles: np.ndarray, p: int) -> np.ndarray:
-    """The frequency (cycles per sample) of the largest term of exp(i angles) along the last
-    axis (n samples, radians, unwrapped) by NAFF's first step, with aw_naff.h's conventions:
+def _leading_frequencies(q: np.ndarray, p: int) -> np.ndarray:
+    """The frequency (cycles per sample) of the largest term of exp(i q) for each row of q
+    (n samples of an angle, radians, unwrapped) by NAFF's first step, with aw_naff.h's conventions:
     m_k = k - (n - 1)/2, the window chi_p = (1 + cos(2 pi m_k / (n - 1)))^p, the transform
     S_j(sigma) = sum m_k^j chi_p z_k exp(-2 pi i sigma m_k); of the maximum's aliases the one
-    nearest the mean rate. Returns angles.shape[:-1]."""
-    shape, n = angles.shape[:-1], angles.shape[-1]
-    q = angles.reshape(-1, n)
+    nearest the mean rate. Returns shape (rows,)."""
+    n = q.shape[-1]
     m = np.arange(n) - (n - 1) / 2
     weighted = (1 + np.cos(2 * np.pi * m / (n - 1))) ** p * np.exp(1j * q)
     # coarse: the largest bin of the padded FFT, moved to the vertex of the parabola through its neighbours
@@ -136,20 +137,22 @@ def _leading_frequencies(angles: np.ndarray, p: int) -> np.ndarray:
     sigma = sigma - np.floor(sigma + 0.5)
     # refinement: Newton steps on |S_0|^2 (docs/frequencies.md), at most half a bin each
     half_bin = 0.5 / n
+    active = np.arange(len(q))  # the rows still moving
     for _ in range(_NEWTON_PASSES):
-        terms = weighted * np.exp(-2j * np.pi * sigma[:, None] * m)
+        terms = weighted[active] * np.exp(-2j * np.pi * sigma[active, None] * m)
         s0, s1, s2 = terms.sum(-1), (terms * m).sum(-1), (terms * m * m).sum(-1)
         slope = np.imag(np.conj(s0) * s1)
         curvature = np.abs(s1) ** 2 - np.real(np.conj(s0) * s2)  # < 0 near a maximum
         newton = -slope / (2 * np.pi * np.where(curvature < 0, curvature, -np.inf))
         delta = np.where(curvature < 0, np.clip(newton, -half_bin, half_bin), np.sign(slope) * half_bin)
-        sigma = sigma + delta
-        if not np.any(np.abs(delta) > np.finfo(float).eps * (np.abs(sigma) + half_bin)):
+        sigma[active] += delta
+        active = active[np.abs(delta) > np.finfo(float).eps * (np.abs(sigma[active]) + half_bin)]  # NaN: stops
+        if active.size == 0:
             break
     rate = (q[:, -1] - q[:, 0]) / (2 * np.pi * (n - 1))  # the mean rate, cycles per sample
     nu = sigma + np.rint(rate - sigma)
     nu[~np.isfinite(q).all(-1)] = np.nan
-    return nu.reshape(shape)
+    return nu
 
 
 def orbit(scene: SceneLike, X=None, P=None, duration: Optional[float] = None, every: Optional[float] = None, *,

@@ -88,7 +88,7 @@ def test_orbit_frequencies_refuse_bad_arguments():
         o.frequencies(15)
     with pytest.raises(ValueError, match="samples = 52: outside the allowed range, 16 to 51"):
         o.frequencies(52)
-    with pytest.raises(ValueError, match="samples = 20.5: a whole number is needed"):
+    with pytest.raises(TypeError, match="samples must be a whole number, not 20.5"):
         o.frequencies(20.5)
     with pytest.raises(ValueError, match="step = 0: outside the allowed range, >= 1"):
         o.frequencies(20, 0)
