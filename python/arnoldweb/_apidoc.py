@@ -53,7 +53,7 @@ def markdown() -> str:
     for name in [n for n in aw.__all__ if inspect.isfunction(getattr(aw, n))]:
         fn = getattr(aw, name)
         out.append(_entry("arnoldweb." + _signature(name, fn), _doc(fn)))
-    for cls in (aw.Scene, aw.Result):
+    for cls in (aw.Scene, aw.Result, aw.Orbit):
         out += [f"### {cls.__name__}", "", _doc(cls), ""]
         for name, member in cls.__dict__.items():
             if name.startswith("_") and name != "__getitem__":
