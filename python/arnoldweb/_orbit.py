@@ -197,3 +197,6 @@ def orbit(scene: SceneLike, X=None, P=None, duration: Optional[float] = None, ev
     s["observe.trajectories"] = {"count": len(x), "every": float(every)}
     record = _core._run(s._scene, None, False, False, x, p, units)
     return Orbit(Result(record), np.arange(len(x)), float(every), single)
+
+
+Orbit.__module__ = "arnoldweb"  # help() and reprs name the public package, not _orbit

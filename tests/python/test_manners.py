@@ -228,9 +228,9 @@ def test_internal_names_stay_inside():
     except aw.SceneError:
         text = traceback.format_exc()
     assert "arnoldweb.SceneError: " in text and "_errors" not in text
-    for cls in (aw.Scene, aw.Result, aw.Error, aw.SceneError, aw.StateError, aw.PlanWarning, aw.OutputRefused):
+    for cls in (aw.Scene, aw.Result, aw.Orbit, aw.Error, aw.SceneError, aw.StateError, aw.PlanWarning, aw.OutputRefused):
         assert cls.__module__ == "arnoldweb", cls
-    for fn in (aw.run, aw.continue_run, aw.load, aw.potential, aw.Scene.set, aw.Scene.from_file, aw.Result.write):
+    for fn in (aw.run, aw.continue_run, aw.load, aw.orbit, aw.potential, aw.Scene.set, aw.Scene.from_file, aw.Result.write):
         sig = inspect.signature(fn)  # help() shows each annotation once quoted ('str | None'), not twice
         hints = [p.annotation for p in sig.parameters.values()] + [sig.return_annotation]
         assert not [h for h in hints if isinstance(h, str) and ("'" in h or '"' in h)], sig
