@@ -348,6 +348,38 @@ std::vector<Method> build() {
     all.push_back(m);
   }
 
+  {  // Omelyan, Mryglod & Folk, Comput. Phys. Commun. 151 (2003) 272, eqs. (63)-(64): the
+     // velocity version of order 6 with 5 force evaluations and 4 gradients (zero gradient on
+     // the end kicks), in closed form with s = sqrt 5, t = sqrt(50 + 22 s):
+     //   V(vartheta) T(rho) V(lambda)+G(xi) T(theta) V(1/2-lambda-vartheta)+G(chi) T(1-2(theta+rho)) ...
+     //   rho = (1 + 1/s)/2, theta = -1/s, vartheta = 1/12, lambda = 5/12 - t/24,
+     //   xi = (15 + 5s)/1152 - t (1/2880 + s/1152), chi = -(11 + 5s)/1152 + t (1/2880 + s/1152);
+     // G carries h^3 [B,[A,B]] as in Chin 4A (whose g = 1/72 is OMF's order-4 chi). Values to 40
+     // digits (mpmath); the linear-flow test checks order 6 in eps^1..3.
+    Method m;
+    m.name = "omf6";
+    m.title = "Omelyan-Mryglod-Folk 6th-order force-gradient";
+    m.source = "Omelyan, Mryglod & Folk, Comput. Phys. Commun. 151 (2003) 272";
+    m.order = 6;
+    m.stages = 5;
+    m.kick_first = true;
+    const double rho = 0.7236067977499789696409173668731276235441;
+    const double theta = -0.4472135954999579392818347337462552470881;
+    const double vartheta = 1.0 / 12;
+    const double lambda = 0.001683619186203287766402563100360490765158;
+    const double xi = -0.00006408390325141897507306236138814724749513;
+    const double chi = 0.003536306125473641197295284583610369469717;
+    const double mid = 0.4149830474804633789002641035663061759015;  // 1/2 - lambda - vartheta
+    m.drift = {rho, theta, 0.4472135954999579392818347337462552470881, theta, rho};  // centre 1 - 2(theta + rho)
+    m.kick = {vartheta, lambda, mid, mid, lambda, vartheta};
+    m.gradient = {0.0, xi, chi, chi, xi, 0.0};
+    m.stability = 3.139;
+    m.eps_orders = {6};
+    m.rkn = true;
+    m.family = "force-gradient";
+    all.push_back(m);
+  }
+
   return all;
 }
 
