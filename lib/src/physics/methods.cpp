@@ -376,6 +376,7 @@ std::vector<Method> build() {
                    {rho, theta, centre, theta, rho}, {vartheta, lambda, mid, mid, lambda, vartheta},
                    {0.0, xi, chi, chi, xi, 0.0}, 3.139);
   }
+
   return all;
 }
 
