@@ -366,6 +366,9 @@ TEST_SUITE("methods") {
     }
     CHECK(find_method("sbab3c").work() == doctest::Approx(3.2));
     CHECK(find_method("chin4a").work() == doctest::Approx(2.2));
+    // Omelyan-Mryglod-Folk order 6: gradients on the four inner kicks, none on the merged end kick
+    CHECK(find_method("omf6v").gradient_stages() == 4);
+    CHECK(find_method("omf6v").work() == doctest::Approx(5.8));
     // a table with gradient terms on every kick pays on every evaluation
     Method every = find_method("chin4a");
     every.gradient = {0.01, 0.02, 0.01};

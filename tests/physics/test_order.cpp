@@ -49,6 +49,7 @@ const std::map<std::string, std::vector<int>>& order_steps() {
       {"yoshida6a", {64, 128, 256, 512}},    {"kahan-li-s9", {50, 100, 200, 400}},
       {"srkn11b", {40, 57, 80, 113}},        {"kahan-li-s15", {50, 63, 80, 101}},
       {"yoshida8d", {64, 91, 128, 181}},     {"chin4a", {50, 100, 200, 400}},
+      {"omf6v", {45, 64, 90, 128}},
   };
   return steps;
 }

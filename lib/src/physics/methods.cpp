@@ -328,24 +328,53 @@ std::vector<Method> build() {
     corrected_of("sbab4", 0.003644793600153249302297139965449772919958, 2.997);
   }
 
-  {  // Chin, Phys. Lett. A 226 (1997) 344, algorithm 4A ("C"): V/6, T/2, (2/3)(V + h^2/48
-     // [V,[T,V]]), T/2, V/6: fourth order in h for any eps, two force evaluations a step, the
-     // gradient on the middle one (g = 2/3 x 1/48 = 1/72).
+  // A force-gradient method given as its kick-first table (K b0 D a0 ... D a_{s-1} K b_s, a
+  // gradient coefficient per kick).
+  auto force_gradient = [&](std::string name, std::string title, std::string source, int order,
+                            std::vector<double> drifts, std::vector<double> kicks, std::vector<double> gradient,
+                            double stability) {
     Method m;
-    m.name = "chin4a";
-    m.title = "Chin 4A force-gradient";
-    m.source = "Chin, Phys. Lett. A 226 (1997) 344";
-    m.order = 4;
-    m.stages = 2;
+    m.name = std::move(name);
+    m.title = std::move(title);
+    m.source = std::move(source);
+    m.order = order;
+    m.stages = static_cast<int>(drifts.size());
     m.kick_first = true;
-    m.drift = {0.5, 0.5};
-    m.kick = {1.0 / 6, 2.0 / 3, 1.0 / 6};
-    m.gradient = {0.0, 1.0 / 72, 0.0};
-    m.stability = 3.464;
-    m.eps_orders = {4};
+    m.drift = std::move(drifts);
+    m.kick = std::move(kicks);
+    m.gradient = std::move(gradient);
+    m.stability = stability;
+    m.eps_orders = {order};
     m.rkn = true;
     m.family = "force-gradient";
     all.push_back(m);
+  };
+
+  // Chin, Phys. Lett. A 226 (1997) 344, algorithm 4A ("C"): V/6, T/2, (2/3)(V + h^2/48
+  // [V,[T,V]]), T/2, V/6: fourth order in h for any eps, two force evaluations a step, the
+  // gradient on the middle one (g = 2/3 x 1/48 = 1/72).
+  force_gradient("chin4a", "Chin 4A force-gradient", "Chin, Phys. Lett. A 226 (1997) 344", 4, {0.5, 0.5},
+                 {1.0 / 6, 2.0 / 3, 1.0 / 6}, {0.0, 1.0 / 72, 0.0}, 3.464);
+
+  // Omelyan, Mryglod & Folk, Comput. Phys. Commun. 151 (2003) 272: order 6, five force
+  // evaluations. G carries h^3 [B,[A,B]] as in Chin 4A (whose 1/72 is OMF's order-4 chi).
+  {  // velocity version, eqs. (63)-(64), four gradients, in closed form (s = sqrt 5,
+     // t = sqrt(50 + 22 s)): V(vartheta) T(rho) V(lambda)+G(xi) T(theta) V(1/2-lambda-vartheta)+G(chi)
+     // T(1-2(theta+rho)), mirrored; rho = (1 + 1/s)/2, theta = -1/s, vartheta = 1/12,
+     // lambda = 5/12 - t/24, xi = (15 + 5s)/1152 - t (1/2880 + s/1152),
+     // chi = -(11 + 5s)/1152 + t (1/2880 + s/1152). 40 digits (mpmath).
+    const double rho = 0.7236067977499789696409173668731276235441;
+    const double theta = -0.4472135954999579392818347337462552470881;
+    const double centre = 0.4472135954999579392818347337462552470881;  // 1 - 2(theta + rho)
+    const double vartheta = 1.0 / 12;
+    const double lambda = 0.001683619186203287766402563100360490765158;
+    const double mid = 0.4149830474804633789002641035663061759015;  // 1/2 - lambda - vartheta
+    const double xi = -0.00006408390325141897507306236138814724749513;
+    const double chi = 0.003536306125473641197295284583610369469717;
+    force_gradient("omf6v", "Omelyan-Mryglod-Folk order 6, velocity version",
+                   "Omelyan, Mryglod & Folk, Comput. Phys. Commun. 151 (2003) 272", 6,
+                   {rho, theta, centre, theta, rho}, {vartheta, lambda, mid, mid, lambda, vartheta},
+                   {0.0, xi, chi, chi, xi, 0.0}, 3.139);
   }
 
   return all;
