@@ -125,14 +125,14 @@ if [ "$mode" = science ]; then
     timeout 120 bash bench/gpu/rates.sh build-gpu/arnoldweb "$CUDA0" /tmp/aw-rates 1 | tee "$OUT/rates.txt"
   fi
   stamp "GPU suites of issues 25 and 26 (open runs, frequencies) and the parity suites"
-  gpu_suites 200 "${AW_SCIENCE_TESTS:-^(parity\.cuda|parity\.opencl|open-runs\.cuda|open-runs\.opencl|frequency-runs\.cuda|frequency-runs\.opencl|order\.cuda)$}"
+  gpu_suites 200 "${AW_SCIENCE_TESTS:-^(parity\.cuda|parity\.opencl|open-runs\.cuda|open-runs\.opencl|frequency-runs\.cuda|frequency-runs\.opencl|order\.cuda|trajectories\.cuda)$}"
   stamp "done"
   exit 0
 fi
 if [ "$mode" = parity ]; then
   CUDA0=$(first_cuda)
   stamp "GPU parity suites"
-  gpu_suites 300 "${AW_PARITY_TESTS:-^(parity\.cuda|parity\.opencl|open-runs\.cuda|frequency-runs\.cuda|frequency-runs\.opencl|order\.cuda)$}"
+  gpu_suites 300 "${AW_PARITY_TESTS:-^(parity\.cuda|parity\.opencl|open-runs\.cuda|frequency-runs\.cuda|frequency-runs\.opencl|order\.cuda|trajectories\.cuda|trajectories\.opencl)$}"
   ctest_rc=$?
   stamp "explorer: a zoom of ${AW_ZOOM:-1000000} trajectories on $CUDA0, request to map bytes"
   timeout 200 python3 bench/explorer/viewer.py --cli build-gpu/arnoldweb --no-browser --device "$CUDA0" \
