@@ -11,6 +11,7 @@
 # library is compiled once for both.
 set(ARNOLDWEB_SANITIZE "" CACHE STRING
     "Sanitizers for every target, e.g. address,undefined (empty: none)")
+option(ARNOLDWEB_SANITIZE_KERNELS "With ARNOLDWEB_SANITIZE: the cpu kernel variants sanitized too (slow: lib/CMakeLists.txt)" OFF)
 option(ARNOLDWEB_FUZZ "Build the libFuzzer target of the scene reader (clang only)" OFF)
 
 if(ARNOLDWEB_SANITIZE)

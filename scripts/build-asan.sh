@@ -8,6 +8,8 @@
 #   scripts/build-asan.sh [TARGET...]      (default: every target)
 #
 # Parallel jobs: $ARNOLDWEB_JOBS (default 2, the cores CI has).
+# ARNOLDWEB_SANITIZE_KERNELS=ON: the cpu kernel variants sanitized too (scripts/check.sh
+# --long; about 20 CPU-minutes more on 2 cores; lib/CMakeLists.txt says why not in CI).
 #
 # Exits 77 (skipped) with the reason when clang-14 or its sanitizer runtimes
 # are missing (Debian: clang-14 libclang-rt-14-dev libomp-14-dev).
@@ -36,6 +38,7 @@ cmake -S . -B "$build_dir" -G Ninja \
   -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
   -DARNOLDWEB_SANITIZE=address,undefined -DARNOLDWEB_FUZZ=ON \
   -DARNOLDWEB_CUDA=OFF -DARNOLDWEB_BENCH=OFF \
+  -DARNOLDWEB_SANITIZE_KERNELS="${ARNOLDWEB_SANITIZE_KERNELS:-OFF}" \
   -DARNOLDWEB_CPU_ISAS= >/dev/null  # one set of cpu kernels (native): the sets give the same bits (ctest cpu.isa)
 targets=()
 for t in "$@"; do targets+=(--target "$t"); done

@@ -3,14 +3,16 @@
 # "Continuous checks"); CI (.ci/run) runs them after scripts/test.sh, whose
 # ctest run already holds the Oclgrind check (ctest oclgrind).
 #
-#   1. build-asan/: clang-14, ASan + UBSan on every target, and the fuzz target
+#   1. build-asan/: clang-14, ASan + UBSan on every target (the cpu kernel variants
+#      only with --long), and the fuzz target
 #      (scripts/build-asan.sh)
 #   2. the fast suites under the sanitizers (scripts/check-sanitizers.sh)
 #   3. the scene reader, what render and compare read back, and state files,
 #      fuzzed for 60 s each (scripts/check-fuzz.sh)
 #
 #   scripts/check.sh            bounded, for CI (about 7 minutes on 2 cores)
-#   scripts/check.sh --long     the fuzzer for an hour instead of a minute
+#   scripts/check.sh --long     the fuzzer for an hour instead of a minute, and the cpu
+#                               kernel variants sanitized too (ARNOLDWEB_SANITIZE_KERNELS)
 #
 # A check that cannot run here (a tool missing) reports itself SKIPPED with
 # the reason; with ARNOLDWEB_REQUIRE_CHECKS=1 (set by .ci/run, where every
@@ -21,7 +23,7 @@ cd "$(dirname "$0")/.."
 fuzz_args=()
 for arg in "$@"; do
   case "$arg" in
-    --long) fuzz_args+=(--long) ;;
+    --long) fuzz_args+=(--long); export ARNOLDWEB_SANITIZE_KERNELS=ON ;;
     *) echo "usage: $0 [--long]" >&2; exit 2 ;;
   esac
 done
