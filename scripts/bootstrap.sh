@@ -39,11 +39,9 @@ fi
 # the baseline x86-64 and the best level here; cmake/ArnoldwebCpuKernels.cmake): a build
 # that runs where it is built compiles no set it can neither run nor test, a third less
 # of the kernels' compile time. Packages and wheels keep every set
-# (ARNOLDWEB_CPU_ISAS="x86-64;x86-64-v3;x86-64-v4", CMake's default); so does
-# ARNOLDWEB_CPU_ISAS=default here.
-isas=${ARNOLDWEB_CPU_ISAS:-host}
-[ "$isas" = default ] && isas="x86-64;x86-64-v3;x86-64-v4"
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "-DARNOLDWEB_CPU_ISAS=$isas" \
+# (CMake's default: x86-64, x86-64-v3 and x86-64-v4); ARNOLDWEB_CPU_ISAS in the environment
+# chooses the sets here (a list, "host", or empty for one set, ARNOLDWEB_CPU_ARCH).
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "-DARNOLDWEB_CPU_ISAS=${ARNOLDWEB_CPU_ISAS-host}" \
   "${cuda_args[@]}" "${launcher_args[@]}" "$@"
 # ARNOLDWEB_BUILD_TARGETS="a b": only those (the ones this configuration has), e.g.
 # scripts/run-default.sh's program and pictures' plugin; else everything
