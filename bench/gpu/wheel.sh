@@ -6,7 +6,8 @@
 # then a scene from Python on every CUDA device, NVIDIA OpenCL device and the
 # cpu, each next to the CLI of the same wheel (same scene, same device): the
 # map and state digests must agree everywhere (portable math: the same bits
-# on every backend). Needs no build and no network there.
+# on every backend); one orbit per device (the same bits) and a HEALPix FITS map read back
+# (issue 38). Needs no build and no network there.
 #
 #   bash bench/gpu/run.sh wheel          (the device tool, carry .device-deps)
 #   bash bench/gpu/wheel.sh [WHEEL_DIR]  (directly; default .device-deps/wheels)
@@ -85,4 +86,25 @@ drawn = sorted(f for f in os.listdir(os.path.join(work, "pictures")) if f.endswi
 print("pictures drawn:", drawn or "none")
 for w in caught:
     print("warning:", w.category.__name__, str(w.message))
+
+# issue 38 on the GPU machine: one orbit on each device (the same bits as the cpu's) and a
+# HEALPix FITS map from the wheel (its own CFITSIO), its header read back
+import numpy as np
+orbits = {}
+for d in wanted:
+    o = aw.orbit(aw.scene("default").set("ensemble.trajectories", 20000).set("run.duration", 50), id=1234,
+                 every=5, device=d["id"])
+    orbits[d["id"]] = o
+    print(f"orbit 1234 on {d['id']}: {len(o.t)} samples, max|dE| {np.max(np.abs(o.dE)):.3e}")
+ref = orbits.get("cpu")
+if ref is not None:
+    same = all(np.array_equal(o.X, ref.X) and np.array_equal(o.P, ref.P) and np.array_equal(o.dE, ref.dE)
+               for o in orbits.values())
+    print("orbits identical on every device:", same)
+r = aw.run(aw.scene("default").set("ensemble.trajectories", 20000).set("output.formats", ["hdf5", "fits"]),
+           device=wanted[0]["id"], out=os.path.join(work, "fits"))
+with open(r.map_file, "rb") as f:
+    cards = f.read(2880 * 4).decode("ascii", "replace")
+keys = {c[:8].strip(): c[10:30].strip() for c in (cards[i:i + 80] for i in range(0, len(cards), 80)) if c[8:10] == "= "}
+print("fits:", os.path.basename(r.map_file), {k: keys.get(k) for k in ("PIXTYPE", "ORDERING", "NSIDE", "INDXSCHM")})
 PY
