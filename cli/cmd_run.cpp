@@ -47,6 +47,18 @@ double last_write(const std::string& path) {
   return ::stat(path.c_str(), &st) == 0 ? static_cast<double>(st.st_mtim.tv_sec) + 1e-9 * st.st_mtim.tv_nsec : 0;
 }
 
+// Where the start-up went (summary.json's "startup"): the inventory, then each device.
+std::string startup_line(const Startup& s) {
+  std::string line;
+  for (const auto& [backend, seconds] : s.inventory_seconds)
+    line += (line.empty() ? "devices asked: " : ", ") + backend + " " + short_number(seconds) + " s";
+  for (const DeviceStartup& d : s.devices)
+    line += (line.empty() ? "" : "; ") + d.id + ": open " + short_number(d.open_seconds) + " s, kernel " +
+            short_number(d.kernel_seconds) + " s (" + d.kernel_from + "), buffers " + short_number(d.buffers_seconds) +
+            " s, " + (d.first_launch_seconds > 0 ? "first launch " + short_number(d.first_launch_seconds) + " s" : "no launch");
+  return line;
+}
+
 void report(const JobPart& part, const Result& result) {
   std::cout << (part.name.empty() ? "done         " : "done panel   ") << result.completed << " trajectories in "
             << short_number(result.wall_seconds) << " s (" << short_number(result.rate()) << " trajectory-steps/s)\n"
@@ -58,6 +70,7 @@ void report(const JobPart& part, const Result& result) {
     std::cout << "energy error max " << short_number(result.energy.max) << ", mean " << short_number(result.energy.mean)
               << "\n";
   std::cout << "map digest   " << digest_map(result) << "\n";
+  if (!result.startup.devices.empty()) std::cout << "start-up     " << startup_line(result.startup) << "\n";
 }
 
 }  // namespace
