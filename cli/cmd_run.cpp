@@ -11,6 +11,7 @@
 
 #include "arnoldweb/arnoldweb.hpp"
 #include "command.hpp"
+#include "device_opening.hpp"
 #include "plan_report.hpp"
 #include "progress.hpp"
 #include "ranks.hpp"
@@ -108,11 +109,12 @@ void refuse_beside_checkpoint(const std::string& out_dir) {
 }  // namespace
 
 int execute_job(const PreparedJob& prepared, bool quiet, const std::optional<FoundCheckpoint>& resume,
-                const std::optional<std::string>& device_option) {
+                const std::optional<std::string>& device_option, DeviceOpening* opening) {
   const Job& job = prepared.job;
   if (!resume) refuse_beside_checkpoint(prepared.out_dir);
   // one process drives every device that run.device (or --device) names; an MPI rank its own
-  const auto backends = open_backends(rank_device(device_option, job.main().scene.device));
+  const auto backends =
+      opening ? opening->take() : open_backends(rank_device(device_option, job.main().scene.device));
   std::vector<Backend*> devices;
   std::vector<DeviceInfo> infos;
   for (const auto& b : backends) {
@@ -200,10 +202,12 @@ int run_scene(const RunFlags& f) {
   // everything is checked before any work: scene, panels, output place
   SceneArgs args = f.scene;
   if (auto pick = explicit_rank_device(args.device)) args.device = *pick;
-  const PreparedJob prepared = prepare_job(args, f.force);
+  const Scene scene = load_scene_args(args);
+  DeviceOpening opening(rank_device(f.scene.device, scene.device));  // while the scene is planned
+  const PreparedJob prepared = prepare_scene_job(scene, args.scene, f.force);
   std::optional<FoundCheckpoint> resume;
   if (f.resume) resume = checkpoint_to_resume(prepared.out_dir);
-  return execute_job(prepared, f.quiet, resume, f.scene.device);
+  return execute_job(prepared, f.quiet, resume, f.scene.device, &opening);
 }
 
 }  // namespace

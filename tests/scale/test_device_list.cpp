@@ -112,6 +112,12 @@ TEST_SUITE("scale") {
     CHECK(contains(text, "cpu is listed twice"));
     CHECK(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu,cuda:97", "--out", root + "/b"}, &text) == 4);
     CHECK(contains(text, "cuda:97: no such device"));
+    // the devices open while the scene is planned: a scene problem found then is still the one reported
+    CHECK(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu,cuda:97", "--set", "integrator.step=-1", "--out",
+                           root + "/b"},
+                          &text) == 2);
+    CHECK(contains(text, "integrator.step"));
+    CHECK_FALSE(contains(text, "cuda:97"));
     CHECK(awtest::run_cli({"run", scene, "--quiet", "--set", "run.device=\"cpu,opencl:0,cpu\"", "--out", root + "/c"},
                           &text) == 2);
     CHECK(contains(text, "cpu is listed twice"));
