@@ -11,6 +11,7 @@
 
 #include "arnoldweb/arnoldweb.hpp"
 #include "command.hpp"
+#include "device_opening.hpp"
 #include "plan_report.hpp"
 #include "progress.hpp"
 #include "ranks.hpp"
@@ -47,6 +48,18 @@ double last_write(const std::string& path) {
   return ::stat(path.c_str(), &st) == 0 ? static_cast<double>(st.st_mtim.tv_sec) + 1e-9 * st.st_mtim.tv_nsec : 0;
 }
 
+// Where the start-up went (summary.json's "startup"): the inventory, then each device.
+std::string startup_line(const Startup& s) {
+  std::string line;
+  for (const auto& [backend, seconds] : s.inventory_seconds)
+    line += (line.empty() ? "devices asked: " : ", ") + backend + " " + short_number(seconds) + " s";
+  for (const DeviceStartup& d : s.devices)
+    line += (line.empty() ? "" : "; ") + d.id + ": open " + short_number(d.open_seconds) + " s, kernel " +
+            short_number(d.kernel_seconds) + " s (" + d.kernel_from + "), buffers " + short_number(d.buffers_seconds) +
+            " s, " + (d.first_launch_seconds > 0 ? "first launch " + short_number(d.first_launch_seconds) + " s" : "no launch");
+  return line;
+}
+
 void report(const JobPart& part, const Result& result) {
   std::cout << (part.name.empty() ? "done         " : "done panel   ") << result.completed << " trajectories in "
             << short_number(result.wall_seconds) << " s (" << short_number(result.rate()) << " trajectory-steps/s)\n"
@@ -58,6 +71,7 @@ void report(const JobPart& part, const Result& result) {
     std::cout << "energy error max " << short_number(result.energy.max) << ", mean " << short_number(result.energy.mean)
               << "\n";
   std::cout << "map digest   " << digest_map(result) << "\n";
+  if (!result.startup.devices.empty()) std::cout << "start-up     " << startup_line(result.startup) << "\n";
 }
 
 }  // namespace
@@ -95,11 +109,12 @@ void refuse_beside_checkpoint(const std::string& out_dir) {
 }  // namespace
 
 int execute_job(const PreparedJob& prepared, bool quiet, const std::optional<FoundCheckpoint>& resume,
-                const std::optional<std::string>& device_option) {
+                const std::optional<std::string>& device_option, DeviceOpening* opening) {
   const Job& job = prepared.job;
   if (!resume) refuse_beside_checkpoint(prepared.out_dir);
   // one process drives every device that run.device (or --device) names; an MPI rank its own
-  const auto backends = open_backends(rank_device(device_option, job.main().scene.device));
+  const auto backends =
+      opening ? opening->take() : open_backends(rank_device(device_option, job.main().scene.device));
   std::vector<Backend*> devices;
   std::vector<DeviceInfo> infos;
   for (const auto& b : backends) {
@@ -187,10 +202,12 @@ int run_scene(const RunFlags& f) {
   // everything is checked before any work: scene, panels, output place
   SceneArgs args = f.scene;
   if (auto pick = explicit_rank_device(args.device)) args.device = *pick;
-  const PreparedJob prepared = prepare_job(args, f.force);
+  const Scene scene = load_scene_args(args);
+  DeviceOpening opening(rank_device(f.scene.device, scene.device));  // while the scene is planned
+  const PreparedJob prepared = prepare_scene_job(scene, args.scene, f.force);
   std::optional<FoundCheckpoint> resume;
   if (f.resume) resume = checkpoint_to_resume(prepared.out_dir);
-  return execute_job(prepared, f.quiet, resume, f.scene.device);
+  return execute_job(prepared, f.quiet, resume, f.scene.device, &opening);
 }
 
 }  // namespace

@@ -52,9 +52,11 @@ PreparedJob prepare_job(const SceneArgs& args, bool force, std::string* device_w
 // Runs a prepared job and writes its outputs (run and resume): checkpoints
 // per run.checkpoint_every, continuing from `resume` when given; returns the
 // exit code (128 + signal when stopped).
-// `device_option`: --device as given (a list gives each MPI rank its entry).
+// `device_option`: --device as given (a list gives each MPI rank its entry);
+// `opening`: the devices already being opened (run), else they are opened here.
+class DeviceOpening;
 int execute_job(const PreparedJob& prepared, bool quiet, const std::optional<FoundCheckpoint>& resume,
-                const std::optional<std::string>& device_option);
+                const std::optional<std::string>& device_option, DeviceOpening* opening = nullptr);
 // The checkpoint a resumed run of `out_dir` continues; CheckpointError if none.
 FoundCheckpoint checkpoint_to_resume(const std::string& out_dir);
 // prepare_job for a scene already read (resume reads it from a checkpoint).

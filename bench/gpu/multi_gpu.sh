@@ -4,7 +4,10 @@
 # timed as a whole process on one GPU and on a list of GPUs driven by one process (a thread per
 # device, no MPI), then with `--device all`. Prints each run's process and compute seconds, the
 # ratio of the one-GPU time to the list's (goal >= 1.9 with two GPUs, as a whole process) and the
-# map and state digests, which must be identical.
+# map and state digests, which must be identical. Beside each run, where its start-up went
+# (summary.json's "startup", issue 42 item 4): the drivers' inventory by backend, each device's
+# open (context), kernels (and where they came from), buffers and first launch, and what the
+# process spent outside the run (process - wall_seconds: inventory, open, planning, writing, exit).
 #
 #   bash bench/gpu/multi_gpu.sh ARNOLDWEB OUTDIR [DEVICES] [TRAJECTORIES]
 #
@@ -36,6 +39,12 @@ process = float(sys.argv[3]) - float(sys.argv[2])
 open(sys.argv[6], "w").write(f"{process}\n")
 print(f'{sys.argv[4]:6s} {sys.argv[5]:24s} process {process:7.2f} s, run {s["wall_seconds"]:7.2f} s, '
       f'{s["trajectory_steps_per_second"]:.3e} traj-steps/s, binned {s["binned"]}, device {s["device"]["name"]}')
+st = s.get("startup", {})
+inv = ", ".join(f"{k} {v:.3f} s" for k, v in st.get("inventory_seconds", {}).items())
+print(f'       start-up: outside the run {process - s["wall_seconds"]:.3f} s; devices asked: {inv or "none"}')
+for d in st.get("devices", []):
+    print(f'         {d["device"]:10s} open {d["open_seconds"]:.3f} s, kernel {d["kernel_seconds"]:.3f} s '
+          f'({d["kernel_from"]}), buffers {d["buffers_seconds"]:.3f} s, first launch {d["first_launch_seconds"]:.3f} s')
 PY
 }
 
@@ -53,7 +62,8 @@ out = sys.argv[1]
 s = {k: json.load(open(f"{out}/{k}/summary.json")) for k in ("one", "list", "all")}
 t = {k: float(open(f"{out}/{k}.seconds").read()) for k in s}
 print(f"ratio one GPU / list: {t['one'] / t['list']:.3f} as a whole process, "
-      f"{s['one']['wall_seconds'] / s['list']['wall_seconds']:.3f} in compute")
+      f"{s['one']['wall_seconds'] / s['list']['wall_seconds']:.3f} in compute; outside the run: one GPU "
+      f"{t['one'] - s['one']['wall_seconds']:.3f} s, list {t['list'] - s['list']['wall_seconds']:.3f} s")
 for k in s:
     print(f"digests {k:4s}: map {s[k]['digests'].get('map')}  final {s[k]['digests'].get('final_states')}  "
           f"kernel {s[k].get('kernel', '')[-60:]}")

@@ -112,6 +112,12 @@ TEST_SUITE("scale") {
     CHECK(contains(text, "cpu is listed twice"));
     CHECK(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu,cuda:97", "--out", root + "/b"}, &text) == 4);
     CHECK(contains(text, "cuda:97: no such device"));
+    // the devices open while the scene is planned: a scene problem found then is still the one reported
+    CHECK(awtest::run_cli({"run", scene, "--quiet", "--device", "cpu,cuda:97", "--set", "integrator.step=-1", "--out",
+                           root + "/b"},
+                          &text) == 2);
+    CHECK(contains(text, "integrator.step"));
+    CHECK_FALSE(contains(text, "cuda:97"));
     CHECK(awtest::run_cli({"run", scene, "--quiet", "--set", "run.device=\"cpu,opencl:0,cpu\"", "--out", root + "/c"},
                           &text) == 2);
     CHECK(contains(text, "cpu is listed twice"));
@@ -140,6 +146,25 @@ TEST_SUITE("devices") {
     const auto j = awtest::summary_of(root + "/two");
     CHECK(j["device"]["id"] == both);
     CHECK(contains(j["kernel"].get<std::string>(), "2 devices of this process (threads)"));
+    // each device's start-up, in the list's order (issue 42, item 4): opened at once, kernels, first launch
+    const auto& started = j["startup"]["devices"];
+    REQUIRE(started.size() == 2);
+    CHECK(started[0]["device"] == "cpu");
+    CHECK(started[1]["device"] == awtest::first_opencl());
+    CHECK(started[0]["kernel_from"] == "built in");
+    CHECK(started[1]["kernel_from"] == "driver");
+    for (const auto& d : started) {
+      CHECK(d["open_seconds"].get<double>() > 0);
+      CHECK(d["kernel_seconds"].get<double>() > 0);
+      // 0 for a device that ran no chunk (PoCL still compiling when the cpu backend had done them all)
+      CHECK(d["first_launch_seconds"].get<double>() >= 0);
+      CHECK(d["first_launch_seconds"].get<double>() < j["wall_seconds"].get<double>());
+    }
+    CHECK(started[0]["first_launch_seconds"].get<double>() > 0);
+    CHECK(j["startup"]["inventory_seconds"].contains("opencl"));  // PoCL was asked for its devices
+    CHECK(contains(text, "start-up     devices asked: "));
+    CHECK(text.find("; cpu: open ") < text.find("; " + awtest::first_opencl() + ": open "));
+    CHECK(awtest::summary_of(root + "/one")["startup"]["devices"].size() == 1);
     // the same through the scene's run.device, and in the other order
     REQUIRE(awtest::run_cli({"run", scene, "--quiet", "--set", "run.device=\"" + awtest::first_opencl() + ",cpu\"", "--out",
                              root + "/scene-key"}) == 0);

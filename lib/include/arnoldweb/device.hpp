@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,6 +20,9 @@ namespace arnoldweb {
 // backend_problems() says why.
 std::vector<DeviceInfo> list_devices();
 std::vector<std::string> backend_problems();
+// How long list_devices' one inventory took, by backend (Startup); empty
+// before it was taken (opening "cpu" takes none).
+std::map<std::string, double> inventory_seconds();
 
 // What one launch computes: trajectories [first, first + count) over the
 // segments [seg_first, seg_end) of their schedule (seg_end < 0: to its end;
@@ -74,6 +78,10 @@ class Backend {
   virtual std::uint64_t preferred_chunk() const = 0;
   // Compiler options / variant used, for the summary.
   virtual std::string kernel_description() const = 0;
+
+  // Its start-up, as far as it went: filled by open_backend (opening), by
+  // prepare (the kernels, the buffers) and by the chunk loop (the first launch).
+  DeviceStartup startup;
 };
 
 // Open a device by id: "cpu", "opencl:N", "cuda:N", or "auto" (the first GPU,
@@ -95,7 +103,9 @@ std::string default_device_id();
 // SceneError (exit 2) for a malformed value or an id listed twice, DeviceError
 // (exit 4) for a device this machine lacks, with the list of those present.
 std::vector<std::string> device_ids(const std::string& device);
-// Opens every device of device_ids(device), in that order.
+// Opens every device of device_ids(device), in that order, each in a thread of
+// its own (their contexts and drivers start at once). When some fail, the
+// error of the first of them in the list's order, once every thread has ended.
 std::vector<std::unique_ptr<Backend>> open_backends(const std::string& device);
 // What a result names when several devices computed it: the ids joined by
 // ",", the names ("2 x NVIDIA H200", or "AMD EPYC + pthread-..."), the compute

@@ -75,6 +75,9 @@ struct Result {
   double trajectory_steps = 0;  // completed * steps per trajectory
   double rate() const { return wall_seconds > 0 ? trajectory_steps / wall_seconds : 0; }
   std::vector<std::uint64_t> chunks;  // size of every launch, in order
+  // The start-up, each device's for this part in the order of the devices
+  // (the devices of this process; under MPI, rank 0's).
+  Startup startup;
 };
 
 // XXH3-128 digests, as 32 hex digits: of the map, and of an output's records

@@ -63,6 +63,8 @@ class ComputeDevice {
   // configuration. Throws BuildError, DeviceError.
   virtual void compile(const KernelConfig& config) = 0;
   virtual std::string kernel_description() const = 0;
+  // Where the last compile's kernels came from (DeviceStartup::kernel_from).
+  virtual std::string kernel_origin() const = 0;
 
   // `what` names the buffer in errors. Throws DeviceError.
   virtual std::unique_ptr<DeviceMemory> allocate(std::size_t bytes, const char* what) = 0;

@@ -6,6 +6,7 @@
 #include "arnoldweb/device.hpp"
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/scene.hpp"
+#include "backends/open_at_once.hpp"
 
 namespace arnoldweb {
 namespace {
@@ -47,9 +48,7 @@ std::vector<std::string> device_ids(const std::string& device) {
 }
 
 std::vector<std::unique_ptr<Backend>> open_backends(const std::string& device) {
-  std::vector<std::unique_ptr<Backend>> backends;
-  for (const std::string& id : device_ids(device)) backends.push_back(open_backend(id));
-  return backends;
+  return detail::open_at_once(device_ids(device), [](const std::string& id) { return open_backend(id); });
 }
 
 DeviceInfo describe_devices(const std::vector<DeviceInfo>& devices) {

@@ -5,6 +5,7 @@
 // in float). Which outputs the records hold is the output table's business:
 // this file only sizes and copies the arenas.
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 
 #include "arnoldweb/errors.hpp"
@@ -27,7 +28,9 @@ class EnsembleBackend final : public Backend {
     require_fp64(plan, info());
     check_device_memory(plan, info(), max_chunk, dev_->max_allocation());
     release();
+    const auto t0 = std::chrono::steady_clock::now();
     dev_->compile(plan.kernel);
+    const auto t1 = std::chrono::steady_clock::now();
     float_ = plan.kernel.precision == Precision::Float;
     frequencies_ = (plan.kernel.features & AW_F_FREQUENCIES) != 0;
     hist_size_ = plan.hist_size;
@@ -36,6 +39,9 @@ class EnsembleBackend final : public Backend {
     rec_ints_ = static_cast<std::uint64_t>(params(plan).ints.rec_ints);
     max_chunk_ = max_chunk;
     allocate(plan);
+    startup.kernel_seconds = std::chrono::duration<double>(t1 - t0).count();
+    startup.kernel_from = dev_->kernel_origin();
+    startup.buffers_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   }
 
   void run_chunk(const ChunkWork& w, ChunkOutput& out) override {

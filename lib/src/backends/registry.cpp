@@ -1,4 +1,6 @@
 // arnoldweb: finding devices and opening backends by id.
+#include <atomic>
+#include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -15,19 +17,30 @@ namespace {
 struct Inventory {
   std::vector<DeviceInfo> devices;
   std::vector<std::string> problems;
+  std::map<std::string, double> seconds;  // by backend
 };
+
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
 
 void take_inventory(Inventory& inv) {
   const detail::KeepQuitSignal keep;  // PoCL's LLVM would take SIGQUIT (os/quit_signal.hpp)
   inv.devices.push_back(detail::cpu_device_info());
+  auto t0 = std::chrono::steady_clock::now();
 #ifdef ARNOLDWEB_HAVE_CUDA
   for (auto& d : detail::cuda_devices(inv.problems)) inv.devices.push_back(d);
+  inv.seconds["cuda"] = since(t0);
 #else
   inv.problems.push_back("cuda: this build has no CUDA backend (the CUDA toolkit was not found "
                          "when it was configured)");
 #endif
+  t0 = std::chrono::steady_clock::now();
   for (auto& d : detail::opencl_devices(inv.problems)) inv.devices.push_back(d);
+  inv.seconds["opencl"] = since(t0);
 }
+
+std::atomic<const Inventory*> taken{nullptr};  // the inventory, once taken
 
 // Devices do not come and go while a program runs: every backend is asked once.
 const Inventory& inventory() {
@@ -36,6 +49,7 @@ const Inventory& inventory() {
     take_inventory(i);
     return i;
   }();
+  taken.store(&inv);
   return inv;
 }
 
@@ -49,6 +63,10 @@ std::string device_list(const std::vector<DeviceInfo>& devs) {
 
 std::vector<DeviceInfo> list_devices() { return inventory().devices; }
 std::vector<std::string> backend_problems() { return inventory().problems; }
+std::map<std::string, double> inventory_seconds() {
+  const Inventory* inv = taken.load();
+  return inv ? inv->seconds : std::map<std::string, double>{};
+}
 
 std::string default_device_id() {
   const auto devs = list_devices();
@@ -99,8 +117,9 @@ std::uint64_t available_memory() {
   return 0;
 }
 
-std::unique_ptr<Backend> open_backend(const std::string& requested) {
-  std::string id = resolve_id(requested);
+namespace {
+
+std::unique_ptr<Backend> open_device(std::string id) {
   if (id == "all" || id.find(',') != std::string::npos) {  // several devices, or "all" of one
     const auto ids = device_ids(id);
     if (ids.size() > 1)
@@ -135,6 +154,16 @@ std::unique_ptr<Backend> open_backend(const std::string& requested) {
 #endif
   }
   no_such_device(id);
+}
+
+}  // namespace
+
+std::unique_ptr<Backend> open_backend(const std::string& requested) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::unique_ptr<Backend> b = open_device(resolve_id(requested));
+  b->startup.id = b->info().id;
+  b->startup.open_seconds = since(t0);
+  return b;
 }
 
 namespace detail {

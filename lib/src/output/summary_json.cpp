@@ -63,6 +63,14 @@ std::string summary_json(const Plan& plan, const Result& r, const std::vector<st
                  {"version", r.device.version},
                  {"compute_units", r.device.compute_units}};
   j["kernel"] = r.kernel;
+  j["startup"] = {{"inventory_seconds", r.startup.inventory_seconds}, {"devices", json::array()}};
+  for (const DeviceStartup& s : r.startup.devices)
+    j["startup"]["devices"].push_back({{"device", s.id},
+                            {"open_seconds", s.open_seconds},
+                            {"kernel_seconds", s.kernel_seconds},
+                            {"kernel_from", s.kernel_from},
+                            {"buffers_seconds", s.buffers_seconds},
+                            {"first_launch_seconds", s.first_launch_seconds}});
   j["wall_seconds"] = r.wall_seconds;
   j["trajectory_steps"] = r.trajectory_steps;
   j["trajectory_steps_per_second"] = r.rate();

@@ -51,12 +51,14 @@ void drive_device(const Plan& plan, Backend& backend, WorkQueue& queue, const Ru
   std::uint64_t want = plan.scene.chunk ? std::min(plan.scene.chunk, max_chunk) : min_chunk;
   ChunkWork done{};
   ChunkOutput out;
+  backend.startup.first_launch_seconds = 0;  // until this part's first launch
   for (;;) {
     const ChunkWork r = queue.next(done, out, want, backend);
     if (r.count == 0) break;
     const double t0 = now_seconds();
     backend.run_chunk(r, out);
     const double dt = now_seconds() - t0;
+    if (!done.count) backend.startup.first_launch_seconds = dt;
     done = r;
     if (!plan.scene.chunk && dt > 0) {
       // aim at chunk_seconds per launch; grow at most 4x at a time

@@ -25,6 +25,7 @@ Result run_part(const Plan& plan, Backend& backend, const RunOptions& options, R
   Result r = reduction.result();
   r.device = backend.info();
   r.kernel = backend.kernel_description();
+  r.startup = {inventory_seconds(), {backend.startup}};
   r.interrupted = queue.stopped();
   r.trajectory_steps = static_cast<double>(r.completed) * static_cast<double>(plan.steps_per_trajectory);
   if (r.completed == plan.scene.trajectories) analyse(plan, r);

@@ -130,7 +130,7 @@ class PartCoordinator {
 }  // namespace
 
 JobResult coordinate_job(const Job& job, Transport& transport, const RunOptions& options, JobObserver* observer,
-                         const DeviceInfo& device, const std::function<std::string()>& kernel) {
+                         const DeviceInfo& device, const std::function<void(Result&)>& describe) {
   for (const JobPart& part : job.parts) {
     require_states(part.plan);
     if (part.plan.slices > 1 && transport.workers() > 1)
@@ -163,7 +163,7 @@ JobResult coordinate_job(const Job& job, Transport& transport, const RunOptions&
       double seconds = 0;
       const bool stopped = part.run(seconds);
       r = parts[k]->result();
-      r.kernel = kernel();
+      describe(r);
       r.interrupted = stopped;
       if (!stopped) analyse(plan, r);
       if (o.progress) o.progress->finish(r.completed, plan.scene.trajectories, r.wall_seconds);

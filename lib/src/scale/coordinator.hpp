@@ -17,9 +17,10 @@
 
 namespace arnoldweb::detail {
 
-// `device`, `kernel`: what the results name (the devices, and their kernels
-// as prepared for the part that has just ended).
+// `device`: what the results name; `describe` names in the result of the
+// part that has just ended the devices' kernels and start-up (Result::kernel,
+// Result::startup) as they were prepared for it.
 JobResult coordinate_job(const Job& job, Transport& transport, const RunOptions& options, JobObserver* observer,
-                         const DeviceInfo& device, const std::function<std::string()>& kernel);
+                         const DeviceInfo& device, const std::function<void(Result&)>& describe);
 
 }  // namespace arnoldweb::detail

@@ -56,8 +56,11 @@ JobResult run_job_on_devices(const Job& job, const std::vector<Backend*>& device
   try {
     std::vector<DeviceInfo> infos;
     for (Backend* d : devices) infos.push_back(d->info());
-    r = detail::coordinate_job(job, transport, options, observer, describe_devices(infos),
-                               [&] { return detail::kernels_of(devices); });
+    r = detail::coordinate_job(job, transport, options, observer, describe_devices(infos), [&](Result& part) {
+      part.kernel = detail::kernels_of(devices);
+      part.startup.inventory_seconds = inventory_seconds();
+      for (const Backend* d : devices) part.startup.devices.push_back(d->startup);
+    });
   } catch (...) {
     detail::Message end;
     end.type = detail::MessageType::End;

@@ -74,16 +74,19 @@ class CpuDevice final : public ComputeDevice {
       kernel_ = rk.kernel;
       variant_ = rk.variant + " (" + isa.name + ", " + lanes + "; compiled at run time by " + rk.compiler + "; " +
                  rk.origin + ")";
+      origin_ = rk.origin;
     } else {
       kernel_ = cpu_kernel_for(k.model, fl, native, isa);
       if (!kernel_)
         throw DeviceError(info_.id, "", 0, "this build has no cpu kernel for model " + std::to_string(k.model));
+      origin_ = "built in";
       variant_ = std::string("cpu_") + (fl ? "float" : "double") + "_" + (native ? "native" : "portable") + " (" +
                  isa.name + ", " + lanes + ")";
     }
     config_ = k;
   }
   std::string kernel_description() const override { return variant_; }
+  std::string kernel_origin() const override { return origin_; }
 
   std::unique_ptr<DeviceMemory> allocate(std::size_t bytes, const char* what) override {
     return std::make_unique<HostMemory>(bytes, info_.id, what);
@@ -144,7 +147,7 @@ class CpuDevice final : public ComputeDevice {
   DeviceInfo info_;
   KernelConfig config_;
   CpuKernel kernel_ = nullptr;
-  std::string variant_;
+  std::string variant_, origin_;
 };
 
 }  // namespace

@@ -84,6 +84,7 @@ class CudaDevice final : public ComputeDevice {
                              "." + std::to_string(cc_ % 10) + ")";
     return d + "; block " + std::to_string(block_);
   }
+  std::string kernel_origin() const override { return origin_; }
 
   std::unique_ptr<DeviceMemory> allocate(std::size_t bytes, const char* what) override {
     select();
@@ -214,6 +215,7 @@ class CudaDevice final : public ComputeDevice {
       throw_cuda(info_.id, "cudaLibraryLoadData", e, why);
     }
     options_ = img.image->options;
+    origin_ = img.origin;
 
     cudaKernel_t k = nullptr;
     cuda_check(cudaLibraryGetKernel(&k, library_.get(), "aw_ensemble"), info_.id, "cudaLibraryGetKernel",
@@ -275,7 +277,7 @@ class CudaDevice final : public ComputeDevice {
   cudaKernel_t ensemble_ = nullptr, fold_ = nullptr, frequencies_kernel_ = nullptr;
   bool frequencies_ = false;
   CudaTarget target_;
-  std::string defines_, options_, jit_log_;
+  std::string defines_, options_, jit_log_, origin_;
   std::string model_source_;  // an expression model's header, or empty
   std::size_t real_size_ = 8;
   unsigned block_ = kBlock;

@@ -128,6 +128,7 @@ class OpenclDevice final : public ComputeDevice {
     }
   }
   std::string kernel_description() const override { return "OpenCL C: " + options_; }
+  std::string kernel_origin() const override { return origin_; }
 
   std::unique_ptr<DeviceMemory> allocate(std::size_t bytes, const char*) override {
     try {
@@ -236,6 +237,7 @@ class OpenclDevice final : public ComputeDevice {
     const std::string key = "arnoldweb.ensemble." + std::to_string(std::hash<std::string>()(source_));
     auto cached = cache->get(key, options_);
     compute::program program;
+    origin_ = cached ? "memory" : "driver";
     if (cached) {
       program = *cached;
     } else {
@@ -274,7 +276,7 @@ class OpenclDevice final : public ComputeDevice {
   compute::kernel ensemble_, fold_, frequencies_kernel_;
   bool frequencies_ = false;
   compute::buffer dummy_;
-  std::string options_;
+  std::string options_, origin_;
   std::string source_;  // the program text (ensemble.cl flattened, with an expression model's header)
   std::size_t real_size_ = 8;
   int lanes_ = 1;

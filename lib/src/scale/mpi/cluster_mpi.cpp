@@ -102,8 +102,9 @@ class MpiCluster final : public Cluster {
                     std::cref(options), "rank 0");
     JobResult r;
     try {
-      r = detail::coordinate_job(job, transport, options, observer, backend.info(), [&] {
-        return backend.kernel_description() + "; " + std::to_string(size_) + " devices (MPI ranks)";
+      r = detail::coordinate_job(job, transport, options, observer, backend.info(), [&](Result& part) {
+        part.kernel = backend.kernel_description() + "; " + std::to_string(size_) + " devices (MPI ranks)";
+        part.startup = {inventory_seconds(), {backend.startup}};  // rank 0's own device
       });
     } catch (...) {
       // the other ranks end with MPI_Abort (the caller's); rank 0's own thread ends here
