@@ -33,9 +33,9 @@ int run_orbit(const OrbitFlags& f) {
                      "trajectory " + std::to_string(f.id) + " is not in the ensemble (ensemble.trajectories = " +
                          std::to_string(scene.trajectories) + ": --id 0 to " + std::to_string(scene.trajectories - 1) +
                          ")");
-  scene.trajectory_ids = {static_cast<std::int64_t>(f.id)};
-  scene.trajectory_count = 0;
-  if (f.every) scene.trajectory_every = *f.every;
+  scene.output_values["observe.trajectories.ids"] = {static_cast<double>(f.id)};
+  scene.output_values.erase("observe.trajectories.count");
+  if (f.every) scene.output_values["observe.trajectories.every"] = {*f.every};
   scene.velocity_map = false;
   scene.zoom = false;
   scene.frame_times.clear();
@@ -50,7 +50,7 @@ int run_orbit(const OrbitFlags& f) {
   const auto files = write_job(prepared.job, result, prepared.output);
   if (!f.quiet) {
     std::cout << "orbit        trajectory " << f.id << " of " << plan.scene.trajectories << ", every "
-              << short_number(plan.scene.trajectory_every) << " T over " << short_number(plan.scene.duration)
+              << short_number(plan.scene.output_value("observe.trajectories.every").at(0)) << " T over " << short_number(plan.scene.duration)
               << " T, on " << backends.front()->info().id << "\n";
     for (const auto& file : files) std::cout << "wrote        " << file << "\n";
   }

@@ -168,8 +168,8 @@ std::vector<Variant> variants() {
   // picked trajectories (observe.trajectories): their samples in the histogram buffer, two words a value,
   // one of them in the second chunk, in time slices
   v.push_back({"picked trajectories, in time slices", [](Scene& s) {
-                 s.trajectory_ids = {2, 12, 20};
-                 s.trajectory_every = 0.04;
+                 s.output_values["observe.trajectories.ids"] = {2, 12, 20};
+                 s.output_values["observe.trajectories.every"] = {0.04};
                  s.slice = 0.04;
                }});
   v.push_back({"native math", [](Scene& s) { s.math = MathMode::Native; }, nullptr, false});

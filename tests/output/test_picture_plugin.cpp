@@ -11,6 +11,7 @@
 
 #include "arnoldweb/version.hpp"
 #include "output/picture_plugin.hpp"
+#include "output_table/output_table.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -43,7 +44,11 @@ TEST_SUITE("output") {
     REQUIRE_MESSAGE(f != nullptr, why);
     CHECK(std::string(f->version) == ARNOLDWEB_VERSION);
     CHECK(static_cast<bool>(f->sphere));
-    CHECK(static_cast<bool>(f->analyses));
+    CHECK(static_cast<bool>(f->outputs));
+    // every picture an output's row names is a row of the plugin's picture table
+    for (const arnoldweb::detail::RecordOutput& row : arnoldweb::detail::record_outputs())
+      for (const std::string& picture : row.pictures) CHECK_MESSAGE(f->draws(picture), (row.name + ": " + picture));
+    CHECK_FALSE(f->draws("no-such-picture"));
 #endif
   }
 

@@ -104,6 +104,12 @@ struct Scene {
   // keys` lists them. No field here per output.
   std::set<std::string> switches;
   bool observes(const std::string& key) const { return switches.count(key) > 0; }
+  // The values of the output table's table keys as written (a dotted sub-key,
+  // "observe.trajectories.ids" -> its numbers; a sub-key not written takes its
+  // row's default): each row declares its own (KeyTable). No field here per output.
+  std::map<std::string, std::vector<double>> output_values;
+  // A sub-key's values: as written, else its row's default (none: not set, or no such key).
+  std::vector<double> output_value(const std::string& key) const;
   bool initial_states = false;
   bool final_states = false;
   // observe.zoom: an R x R histogram of a square region in gnomonic projection
@@ -150,14 +156,6 @@ struct Scene {
   // every `average_every` T (0: the actions at the sample time)
   double diffusion_average = 0;
   double diffusion_average_every = 1.0;
-  // observe.trajectories: the sampled states of chosen trajectories every
-  // `every` T (trajectories.h5): `ids`, or the first `count` (neither: off)
-  std::vector<std::int64_t> trajectory_ids;
-  std::int64_t trajectory_count = 0;
-  double trajectory_every = 1.0;
-  bool samples_trajectories() const { return !trajectory_ids.empty() || trajectory_count > 0; }
-  // the ids observe.trajectories picks, increasing
-  std::vector<std::int64_t> picked_trajectories() const;
 
   // [output]
   std::string output_dir = "out";

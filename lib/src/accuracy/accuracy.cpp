@@ -86,11 +86,10 @@ Scene pilot_scene(const Scene& s, const std::string& method, double step, std::u
   p.confine = false;
   p.frame_times.clear();
   p.fli = p.lyapunov = false;
-  p.switches.clear();
+  p.switches.clear();  // the output table's switches and table keys: every output off
+  p.output_values.clear();
   p.frequencies = false;
   p.diffusion = false;
-  p.trajectory_ids.clear();
-  p.trajectory_count = 0;
   p.slice = 0;
   p.panels.clear();
   return p;

@@ -31,9 +31,11 @@ struct PictureFunctions {
                const std::array<double, 2>& center, double width, const RenderOptions& o);
   void (*figure)(const std::string& path, const Plan& plan, const Result& result,
                  const std::vector<FigurePanel>& panels, const RenderOptions& o);
-  // the grid pictures the output table names (fli.png, ...); frequency_map.png, diffusion_index.png, diffusion.png
-  void (*indicators)(const Plan& plan, const Result& result, const std::string& dir, std::vector<std::string>& names);
-  void (*analyses)(const Plan& plan, const Result& result, const std::string& dir, std::vector<std::string>& names);
+  // the pictures the output table names (its datasets' grid pictures, its rows' `pictures`: rows of the
+  // plugin's picture table, lib/src/pictures/picture_table.cpp), into `dir`, their names appended to `names`
+  void (*outputs)(const Plan& plan, const Result& result, const std::string& dir, std::vector<std::string>& names);
+  // whether the picture table has a row of this name
+  bool (*draws)(const std::string& picture);
 };
 
 // The name of the plugin's entry point: const PictureFunctions* (void).

@@ -124,8 +124,7 @@ void write_pictures(const Plan& plan, const Result& r, const std::string& dir, s
       out.push_back("frames.mp4");
     }
   }
-  draw->indicators(plan, r, dir, out);
-  draw->analyses(plan, r, dir, out);
+  draw->outputs(plan, r, dir, out);
 }
 
 }  // namespace arnoldweb::detail

@@ -11,6 +11,7 @@
 #include "output/atomic_file.hpp"
 #include "output/h5_writer.hpp"
 #include "output_table/output_table.hpp"
+#include "plan/analysis_plan.hpp"
 #include "plan/plan_params.hpp"
 
 namespace arnoldweb {
@@ -77,18 +78,26 @@ void plan_attribute(H5Writer& h, hid_t where, const std::string& name, const Pla
     h.attr(where, "window_order", static_cast<std::int64_t>(plan.scene.frequency_window));
   } else if (name == "diffusion_every") {
     h.attr(where, "every", plan.scene.diffusion_every);
-  } else if (name == "trajectory_samples") {  // which trajectories, when (observe.trajectories)
-    const std::vector<std::int64_t> ids = plan.scene.picked_trajectories();
-    std::vector<double> t(static_cast<std::size_t>(detail::params(plan).ints.pick_samples) + 1);
-    for (std::size_t q = 0; q < t.size(); ++q)
-      t[q] = plan.start_time() + static_cast<double>(q) * plan.scene.trajectory_every;
-    h.attr(h.dataset(where, "ids", H5T_NATIVE_INT64, {ids.size()}, ids.data()), "meaning",
-           std::string("the trajectory (index in the ensemble) of each row"));
-    h.attr(h.dataset(where, "time", H5T_NATIVE_DOUBLE, {t.size()}, t.data()), "meaning",
-           std::string("the time of each sample, in T"));
-    h.attr(where, "every", plan.scene.trajectory_every);
   } else
     throw OutputError(name, "the output table names an attribute the writer does not know");
+}
+
+// What a row's table keys write into its group (KeyTable::data), when switched on.
+void key_table_data(H5Writer& h, hid_t where, const RecordOutput& row, const Plan& plan) {
+  for (const detail::KeyTable& t : row.tables) {
+    if (!t.data || !t.on(plan.scene.output_values)) continue;
+    for (const detail::KeyData& d :
+         t.data(t, plan.scene.output_values, detail::key_plan(plan.scene, plan), detail::params(plan).ints)) {
+      if (!d.dataset) {
+        h.attr(where, d.name.c_str(), d.reals.at(0));
+        continue;
+      }
+      const hid_t set = d.ints.empty()
+                            ? h.dataset(where, d.name.c_str(), H5T_NATIVE_DOUBLE, {d.reals.size()}, d.reals.data())
+                            : h.dataset(where, d.name.c_str(), H5T_NATIVE_INT64, {d.ints.size()}, d.ints.data());
+      h.attr(set, "meaning", d.meaning);
+    }
+  }
 }
 
 }  // namespace
@@ -107,6 +116,7 @@ void write_records_hdf5(const std::string& path, const std::string& file, const 
         if (d.output == row.name) write_dataset(h, where, d);
       h.attr(where, "digest", digest_records(r, row.name));
       for (const std::string& a : row.attributes) plan_attribute(h, where, a, plan);
+      key_table_data(h, where, row, plan);
       grid = grid || (row.grid_shaped && s.initial == "grid");
     }
     if (grid) write_grid(h, s);

@@ -1,9 +1,121 @@
 // arnoldweb: the output table (output_table.hpp).
 #include "output_table/output_table.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <set>
+
 #include "aw_params.h"
 
 namespace arnoldweb::detail {
+namespace {
+
+// observe.trajectories: picked records, each of every id at every sample, at most
+constexpr std::uint64_t kMaxPickedRecords = 1u << 20;
+
+bool positive(const std::vector<double>& v) { return v[0] > 0; }
+
+// The ids observe.trajectories picks, increasing: `ids`, or 0 .. count - 1 (both: the planner refuses it).
+std::vector<std::int64_t> picked_ids(const KeyTable& t, const KeyValues& v) {
+  std::vector<std::int64_t> ids;
+  for (double d : t.value(v, "ids")) ids.push_back(static_cast<std::int64_t>(d));
+  const std::vector<double> count = t.value(v, "count");
+  for (std::int64_t k = 0; !count.empty() && k < static_cast<std::int64_t>(count[0]); ++k) ids.push_back(k);
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+KeyProblem check_trajectories(const KeyTable& t, const KeyValues& v, const KeyPlan& p) {
+  const std::string ids_key = t.sub(t.written(v, "ids") ? "ids" : "count"), every_key = t.sub("every");
+  if (t.written(v, "ids") && t.written(v, "count"))
+    return {t.sub("count"), "give observe.trajectories.ids or .count, not both"};
+  const std::vector<std::int64_t> ids = picked_ids(t, v);
+  if (static_cast<std::uint64_t>(ids.back()) >= p.trajectories)
+    return {ids_key, "trajectory " + p.count(static_cast<std::uint64_t>(ids.back())) + " is not in the ensemble (" +
+                         "ensemble.trajectories = " + p.count(p.trajectories) + ": ids 0 to " +
+                         p.count(p.trajectories - 1) + ")"};
+  const double every = t.value(v, "every")[0];
+  const std::int64_t samples = p.ratio(p.duration, every);
+  if (samples == 0)
+    return {every_key, p.number(every) + " T does not divide run.duration = " + p.number(p.duration) + " T"};
+  if (p.ratio(every, p.interval) == 0)
+    return {every_key, p.number(every) + " T is not a multiple of the shortest sample interval, " +
+                           p.number(p.interval) +
+                           " T (observe.energy_error.every, observe.frequencies.every, observe.diffusion.every or "
+                           "run.average)"};
+  const std::uint64_t records = ids.size() * static_cast<std::uint64_t>(samples + 1);
+  if (records > kMaxPickedRecords)
+    return {every_key, p.count(ids.size()) + " trajectories x " + p.count(static_cast<std::uint64_t>(samples + 1)) +
+                           " samples = " + p.count(records) + " states; at most " + p.count(kMaxPickedRecords) +
+                           " are kept: choose a longer interval or fewer trajectories"};
+  return {};
+}
+
+void fill_trajectories(const KeyTable& t, const KeyValues& v, const KeyPlan& p, IntParams& ip) {
+  ip.pick_stride = 1;
+  if (!t.on(v)) return;
+  const std::vector<std::int64_t> ids = picked_ids(t, v);
+  const double every = t.value(v, "every")[0];
+  ip.pick_count = static_cast<std::int64_t>(ids.size());
+  std::copy(ids.begin(), ids.end(), ip.pick_ids);
+  ip.pick_samples = p.ratio(p.duration, every);
+  ip.pick_stride = p.ratio(every, p.interval);
+}
+
+// which trajectories, when
+std::vector<KeyData> trajectory_data(const KeyTable& t, const KeyValues& v, const KeyPlan& p, const IntParams& ip) {
+  const double every = t.value(v, "every")[0];
+  std::vector<double> time(static_cast<std::size_t>(ip.pick_samples) + 1);
+  for (std::size_t q = 0; q < time.size(); ++q) time[q] = p.start_time + static_cast<double>(q) * every;
+  return {{"ids", true, {}, picked_ids(t, v), "the trajectory (index in the ensemble) of each row"},
+          {"time", true, time, {}, "the time of each sample, in T"},
+          {"every", false, {every}}};
+}
+
+const KeyTable trajectory_keys = {
+    "observe.trajectories", AW_F_TRAJECTORIES, 0,
+    "{ ids = [i, j, ...], every = T }, { count = n, every = T } or false",
+    "a table { ids = [i, j, ...], every = <T> } or { count = n, every = <T> }, or false",
+    "The orbits of chosen trajectories: the position (in turns, with the winding counts, and unwrapped), the "
+    "momentum and the energy error E(t) - E(0) of each at t = 0, every, 2 every, ... up to run.duration: "
+    "trajectories.h5. Memory goes with the chosen trajectories, not the ensemble.",
+    {{"ids", TableSubKey::Kind::Integers, "1 to 1024 different ids from 0 to ensemble.trajectories - 1",
+      "an array of 1 to 1024 different integers >= 0 (trajectory ids)",
+      [](const std::vector<double>& x) {
+        if (x.empty() || x.size() > AW_MAX_PICKS) return false;
+        std::set<double> seen;
+        for (double d : x)
+          if (!(d >= 0 && d < 9e15 && d == std::floor(d)) || !seen.insert(d).second) return false;
+        return true;
+      },
+      "The trajectories to record, by index (trajectory i of the ensemble; the same bits as in a run of the whole "
+      "ensemble)."},
+     {"count", TableSubKey::Kind::Integer, "1 to 1024, at most ensemble.trajectories", "an integer from 1 to 1024",
+      [](const std::vector<double>& x) { return x[0] >= 1 && x[0] <= AW_MAX_PICKS; },
+      "Record trajectories 0 .. count - 1 (instead of ids)."},
+     {"every", TableSubKey::Kind::Real, "> 0, divides run.duration, a multiple of the shortest sample interval",
+      "a finite float greater than 0 (in units of T)", positive,
+      "Sample interval, in T: a multiple of the shortest sample interval (observe.energy_error.every, or "
+      "run.average without it; see observe.frequencies.every).",
+      {1.0}}},
+    check_trajectories,
+    fill_trajectories,
+    trajectory_data};
+
+}  // namespace
+
+bool KeyTable::on(const KeyValues& v) const {
+  for (const TableSubKey& k : keys)
+    if (k.default_value.empty() && written(v, k.name)) return true;
+  return false;
+}
+
+std::vector<double> KeyTable::value(const KeyValues& v, const std::string& name) const {
+  if (const auto it = v.find(sub(name)); it != v.end()) return it->second;
+  for (const TableSubKey& k : keys)
+    if (k.name == name) return k.default_value;
+  return {};
+}
 
 const std::vector<RecordOutput>& record_outputs() {
   static const std::vector<RecordOutput> rows = {
@@ -37,7 +149,10 @@ const std::vector<RecordOutput>& record_outputs() {
        {"duration", "tangent_initial"},
        {{"observe.megno", AW_F_MEGNO, AW_F_TANGENT,
          "Mean MEGNO <Y> of every trajectory (2 on regular orbits, growing as lambda t / 2 on chaotic ones) and the "
-         "Lyapunov exponent from its slope."}}},
+         "Lyapunov exponent from its slope."}},
+       {},
+       nullptr,
+       {"map_and_fli"}},
       {"frequencies", AW_OUT_FREQUENCIES, AW_F_FREQUENCIES, fixed(AW_FREQ_REALS), fixed(0), "frequencies.h5", "", true,
        {{"nu_first", false, 0, 3, "the frequency of the largest term of each angle (x, y, z) over the first window, turns per T; "
                                   "NaN: trajectory flagged, or no maximum found"},
@@ -46,7 +161,11 @@ const std::vector<RecordOutput>& record_outputs() {
          false, true}},
        "the leading frequency of every angle over two consecutive windows and the diffusion index "
        "(observe.frequencies, NAFF; docs/frequencies.md)",
-       {"duration", "frequency_window"}},
+       {"duration", "frequency_window"},
+       {},
+       {},
+       nullptr,
+       {"frequency_map", "diffusion_index"}},
       {"actions", AW_OUT_ACTIONS, AW_F_DIFFUSION,
        [](const IntParams& ip) { return static_cast<int>(3 * (ip.diffusion_samples + 1)); }, fixed(1), "diffusion.h5", "",
        false,
@@ -55,7 +174,11 @@ const std::vector<RecordOutput>& record_outputs() {
         {"status", true, 0, 1, "the trajectory's status at the end (0 ok: a flagged one is left out of the moments)"}},
        "the actions of every trajectory at every sample time (observe.diffusion; the moments and D: diffusion.csv, "
        "summary.json)",
-       {"diffusion_every"}},
+       {"diffusion_every"},
+       {},
+       {},
+       nullptr,
+       {"diffusion"}},
       {"trajectories", AW_OUT_TRAJECTORIES, AW_F_TRAJECTORIES, fixed(AW_PICK_REALS), fixed(AW_PICK_INTS),
        "trajectories.h5", "", false,
        {{"position_turns", false, 0, 3, "position in turns (wrapped to [-1/2, 1/2]): shape (ids, samples, 3)"},
@@ -64,12 +187,14 @@ const std::vector<RecordOutput>& record_outputs() {
         {"momentum", false, 3, 3, "momentum P: shape (ids, samples, 3)"},
         {"energy_error", false, 6, 1, "E(t) - E(0): shape (ids, samples)"}},
        "the state and energy error of chosen trajectories (observe.trajectories ids) at t = 0, every, 2 every, ...",
-       {"trajectory_samples"},
        {},
+       {},
+       {trajectory_keys},
        [](const IntParams& ip) {
          return std::vector<std::uint64_t>{static_cast<std::uint64_t>(ip.pick_count),
                                            static_cast<std::uint64_t>(ip.pick_samples + 1)};
-       }},
+       },
+       {"orbits"}},
       // internal (no file): the state between two launches (open runs), in checkpoints only
       {"carry", AW_OUT_CARRY, AW_F_CARRY, fixed(AW_CARRY_REALS), fixed(AW_CARRY_INTS), "", "", false, {},
        "a trajectory's whole state between two time slices, or the state it starts from (ensemble.initial = "
@@ -85,10 +210,19 @@ std::vector<const OutputSwitch*> output_switches() {
   return all;
 }
 
-std::uint32_t switch_features(const std::set<std::string>& on) {
+std::vector<const KeyTable*> key_tables() {
+  std::vector<const KeyTable*> all;
+  for (const RecordOutput& r : record_outputs())
+    for (const KeyTable& t : r.tables) all.push_back(&t);
+  return all;
+}
+
+std::uint32_t switch_features(const std::set<std::string>& on, const KeyValues& values) {
   std::uint32_t f = 0;
   for (const OutputSwitch* w : output_switches())
     if (on.count(w->key)) f |= w->bit | w->needs;
+  for (const KeyTable* t : key_tables())
+    if (t->on(values)) f |= t->bit | t->needs;
   return f;
 }
 

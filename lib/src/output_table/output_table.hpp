@@ -9,19 +9,23 @@
 // and the MPI messages carry those arenas, Result splits them into one Records
 // per row, and the writers, the digests in summary.json and Python follow.
 //
-// A row also declares the scene keys that ask for it (switches: the scene
-// layer's key table takes them from here, and the planner's features follow
-// them) and, per dataset, the picture a grid scene draws of it (the pictures
-// plugin loops over those). This table sits below the scene (docs/design.md,
-// "Layers") so that the scene's keys can come from it.
+// A row also declares the scene keys that ask for it (switches, and table keys
+// with their sub-keys, checks, parameters and data: the scene layer's key
+// table takes them from here, the planner's features, checks and parameters
+// follow them), per dataset the picture a grid scene draws of it, and the
+// pictures drawn of its records (rows of the pictures plugin's picture table).
+// This table sits below the scene (docs/design.md, "Layers") so that the
+// scene's keys can come from it.
 //
 // Adding a per-trajectory output: a slot in aw_params.h, the device code that
 // writes aw_record_r/aw_record_i(out, ip, slot, rec) (an effect header and its
-// hook), and a row here (docs/design.md, "Adding an output").
+// hook), a row here, and its picture's row if it draws one (docs/design.md,
+// "A per-trajectory output").
 #pragma once
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -69,6 +73,83 @@ struct OutputSwitch {
   std::string effect() const { return key.substr(key.find('.') + 1); }
 };
 
+// The values of the output table's table keys as a scene keeps them
+// (Scene::output_values): a dotted sub-key ("observe.trajectories.ids") -> its
+// numbers (integers held exactly), for the sub-keys written only.
+using KeyValues = std::map<std::string, std::vector<double>>;
+
+// One sub-key of a table key (KeyTable): its value is a number or an array.
+struct TableSubKey {
+  enum class Kind { Integer, Real, Integers };
+  std::string name;  // after the table's key: "ids" is "observe.trajectories.ids"
+  Kind kind = Kind::Real;
+  std::string allowed;  // as the docs show it
+  std::string must;     // completes "must be ..." in a reading error
+  // what is accepted when read (a number: one value); a failure names the key and `must`
+  std::function<bool(const std::vector<double>&)> ok;
+  std::string meaning;
+  // its value when not written; none: not set, and writing it switches the table on
+  std::vector<double> default_value = {};
+};
+
+// What a table key's checks and parameters take from the plan: the schedule,
+// and the planner's exact ratio of durations (0: not a whole number >= 1) and
+// its number formats for messages.
+struct KeyPlan {
+  std::uint64_t trajectories = 0;
+  double duration = 0;    // run.duration, T
+  double interval = 0;    // the shortest sample interval, T
+  double start_time = 0;  // the run's first time, T (a state file's time)
+  std::int64_t (*ratio)(double x, double unit) = nullptr;
+  std::string (*number)(double v) = nullptr;
+  std::string (*count)(std::uint64_t n) = nullptr;
+};
+
+// A key's value refused together with the plan: the key named, and why.
+struct KeyProblem {
+  std::string key;  // "": none
+  std::string message;
+};
+
+// A dataset or attribute a table key writes into its row's group, from its values
+// and the plan (the picked trajectories' ids and sample times).
+struct KeyData {
+  std::string name;
+  bool dataset = false;  // a dataset (with `meaning`), else a scalar attribute of reals[0]
+  std::vector<double> reals = {};
+  std::vector<std::int64_t> ints = {};  // an integer dataset when not empty
+  std::string meaning = {};
+};
+
+// A table-valued scene key that asks for a row: `key = { sub = ..., ... }` or
+// false. The scene keeps its sub-keys' values in Scene::output_values (no field
+// per output); the key table (lib/src/scene/keys.cpp) reads, writes and
+// documents them from here, the effect table names its effect after the key,
+// the planner checks them against the schedule (`check`) and fills the
+// kernels' parameters (`fill`), the writer adds `data` to the row's group,
+// `continue` may set it, and the accuracy pilot turns it off.
+struct KeyTable {
+  using Values = KeyValues;
+  std::string key;          // "observe.<name>"
+  std::uint32_t bit = 0;    // its effect's AW_F_* bit
+  std::uint32_t needs = 0;  // AW_F_* bits of the effects it needs as well
+  std::string allowed, must, meaning;  // of the table key itself, as for a sub-key
+  std::vector<TableSubKey> keys;
+  std::function<KeyProblem(const KeyTable& t, const Values& v, const KeyPlan& p)> check = nullptr;
+  // always called (off too: a parameter's neutral value)
+  std::function<void(const KeyTable& t, const Values& v, const KeyPlan& p, IntParams& ip)> fill = nullptr;
+  std::function<std::vector<KeyData>(const KeyTable& t, const Values& v, const KeyPlan& p, const IntParams& ip)> data =
+      nullptr;
+
+  std::string effect() const { return key.substr(key.find('.') + 1); }
+  std::string sub(const std::string& name) const { return key + "." + name; }
+  // on: a sub-key without a default is written
+  bool on(const Values& v) const;
+  // a sub-key's values: as written, else its default
+  std::vector<double> value(const Values& v, const std::string& name) const;
+  bool written(const Values& v, const std::string& name) const { return v.count(sub(name)) > 0; }
+};
+
 struct RecordOutput {
   std::string name;           // Result::records_of, summary.json "digests", Python
   int slot = 0;               // AW_OUT_* (aw_params.h)
@@ -84,12 +165,16 @@ struct RecordOutput {
   // attributes of the file's root taken from the plan ("duration", "tangent_initial")
   std::vector<std::string> attributes = {};
   std::vector<OutputSwitch> switches = {};  // the boolean keys that ask for it
+  std::vector<KeyTable> tables = {};        // the table keys that ask for it
   // Picked (not per trajectory): records of a few chosen trajectories, `shape`
   // of them (e.g. picks x samples), `reals` and `ints` columns each, in the
   // histogram buffer after the maps (aw_params.h, "Picked records"): their
   // memory is the picks', not the ensemble's, and they take no columns of the
   // trajectories' records. Their datasets have the records' shape.
   Shape picked = nullptr;
+  // The pictures drawn of its records: names of rows of the pictures plugin's
+  // picture table (lib/src/pictures/picture_table.cpp).
+  std::vector<std::string> pictures = {};
   // Kept between launches only (checkpoints), never a result: no file.
   bool internal() const { return file.empty(); }
 };
@@ -97,8 +182,11 @@ struct RecordOutput {
 const std::vector<RecordOutput>& record_outputs();
 // Every row's switches, in table order.
 std::vector<const OutputSwitch*> output_switches();
-// The AW_F_* bits the switches set true (their keys in `on`) ask for.
-std::uint32_t switch_features(const std::set<std::string>& on);
+// Every row's table keys, in table order.
+std::vector<const KeyTable*> key_tables();
+// The AW_F_* bits the switches set true (their keys in `on`) and the table keys
+// switched on (their values) ask for.
+std::uint32_t switch_features(const std::set<std::string>& on, const KeyValues& values);
 // The row of a name, or nullptr.
 const RecordOutput* find_record_output(const std::string& name);
 // The rows a kernel with these features writes, in table order.

@@ -34,10 +34,4 @@ void render_zoom_png(const std::string& path, const std::vector<std::uint64_t>& 
 void draw_figure_png(const std::string& path, const Plan& plan, const Result& result,
                      const std::vector<FigurePanel>& panels, const RenderOptions& options);
 
-// Writes frequency_map.png and diffusion_index.png (a grid scene) of a run
-// with observe.frequencies, and diffusion.png of one with a diffusion
-// analysis, into `dir`; appends their names to `names`. Throws OutputError.
-void write_analysis_pictures(const Plan& plan, const Result& result, const std::string& dir,
-                             std::vector<std::string>& names);
-
 }  // namespace arnoldweb::detail

@@ -32,10 +32,4 @@ std::string picture_caption(const Result& r);
 void write_grid_picture(const Plan& plan, const Result& r, const std::string& path, const std::vector<double>& values,
                         const std::string& label);
 
-// Writes the pictures that the output table's datasets name (RecordDataset::
-// picture: fli.png, ...), of those the run wrote, for a grid scene into `dir`,
-// appending their names to `names`. Nothing without a grid. Throws OutputError.
-void write_indicator_pictures(const Plan& plan, const Result& result, const std::string& dir,
-                              std::vector<std::string>& names);
-
 }  // namespace arnoldweb::detail

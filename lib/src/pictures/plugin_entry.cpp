@@ -3,13 +3,18 @@
 #include "arnoldweb/version.hpp"
 #include "output/picture_plugin.hpp"
 #include "pictures/drawing.hpp"
-#include "pictures/indicator_pictures.hpp"
+#include "pictures/picture_table.hpp"
 
 extern "C" __attribute__((visibility("default"))) const arnoldweb::detail::PictureFunctions*
 arnoldweb_picture_functions() {
   using namespace arnoldweb::detail;
-  static const PictureFunctions functions{
-      ARNOLDWEB_VERSION, sizeof(PictureFunctions), draw_sphere_png,          draw_mollweide_png,
-      render_zoom_png,   draw_figure_png,          write_indicator_pictures, write_analysis_pictures};
+  static const PictureFunctions functions{ARNOLDWEB_VERSION,
+                                          sizeof(PictureFunctions),
+                                          draw_sphere_png,
+                                          draw_mollweide_png,
+                                          render_zoom_png,
+                                          draw_figure_png,
+                                          write_output_pictures,
+                                          [](const std::string& name) { return find_picture(name) != nullptr; }};
   return &functions;
 }

@@ -1,5 +1,6 @@
 // arnoldweb: the pictures of the analyses (analysis_files.hpp,
-// docs/frequencies.md).
+// docs/frequencies.md) and of the picked orbits: rows of the picture table
+// (picture_table.cpp).
 //  frequency_map.png  every trajectory as a point (nu_x, nu_y) of its first
 //                     window, coloured by its diffusion index log10 |dnu|;
 //                     where points share a pixel the largest index shows, so
@@ -23,6 +24,7 @@
 #include "pictures/drawing.hpp"
 #include "pictures/canvas.hpp"
 #include "pictures/indicator_pictures.hpp"
+#include "pictures/picture_table.hpp"
 #include "plan/plan_params.hpp"
 
 namespace arnoldweb::detail {
@@ -213,8 +215,9 @@ void orbit_panel(Canvas& c, double x0, double y0, double w, double h, std::size_
 }
 
 void render_trajectories(const Plan& plan, const Result& r, const Records& rec, const std::string& path) {
-  const auto samples = static_cast<std::size_t>(params(plan).ints.pick_samples) + 1;
-  const double every = plan.scene.trajectory_every;
+  const IntParams& ip = params(plan).ints;
+  const auto samples = static_cast<std::size_t>(ip.pick_samples) + 1;
+  const double every = plan.scene.output_value("observe.trajectories.every").at(0);
   std::vector<double> px, py, lon, lat, t, de;
   for (std::size_t m = 0; m < rec.count(); ++m) {
     const double* v = &rec.reals[m * rec.reals_per];
@@ -229,7 +232,7 @@ void render_trajectories(const Plan& plan, const Result& r, const Records& rec, 
   orbit_panel(c, 110, 70, 440, 440, samples, px, py, "p_x", "p_y");
   orbit_panel(c, 700, 70, 440, 440, samples, lon, lat, "longitude of P (degrees)", "latitude of P (degrees)");
   orbit_panel(c, 1290, 70, 440, 440, samples, t, de, "t (T)", "log10 |E(t) - E(0)|");
-  const std::vector<std::int64_t> ids = plan.scene.picked_trajectories();
+  const std::vector<std::int64_t> ids(ip.pick_ids, ip.pick_ids + ip.pick_count);
   c.text(20, 28, "orbits of " + std::to_string(ids.size()) + " trajectories, every " + fmt(every) + " T   " +
                      picture_title(plan), 15);
   for (std::size_t k = 0; k < ids.size() && k < 40; ++k) {  // which colour is which trajectory
@@ -243,28 +246,28 @@ void render_trajectories(const Plan& plan, const Result& r, const Records& rec, 
 
 }  // namespace
 
-void write_analysis_pictures(const Plan& plan, const Result& r, const std::string& dir,
-                             std::vector<std::string>& names) {
-  if (const Records* rec = r.records_of("frequencies"); rec && rec->count() > 0) {
-    render_frequency_map(plan, r, *rec, dir + "/frequency_map.png");
-    names.push_back("frequency_map.png");
-    if (plan.scene.initial == "grid") {
-      write_grid_picture(plan, r, dir + "/diffusion_index.png", diffusion_index(*rec),
-                         "diffusion index log10 ||nu(2)| - |nu(1)||");
-      names.push_back("diffusion_index.png");
-    }
-  }
-  if (const Records* rec = r.records_of("trajectories"); rec && rec->count() > 0) {
-    render_trajectories(plan, r, *rec, dir + "/trajectories.png");
-    names.push_back("trajectories.png");
-  }
-  if (const auto it = r.analyses.find("diffusion"); it != r.analyses.end()) {
-    const nlohmann::json j = nlohmann::json::parse(it->second);
-    if (j.contains("moments") && j.contains("along_fit")) {
-      render_diffusion(plan, r, j, dir + "/diffusion.png");
-      names.push_back("diffusion.png");
-    }
-  }
+bool draw_frequency_map(const Plan& plan, const Result& r, const Records& rec, const std::string& path) {
+  render_frequency_map(plan, r, rec, path);
+  return true;
+}
+
+bool draw_diffusion_index(const Plan& plan, const Result& r, const Records& rec, const std::string& path) {
+  write_grid_picture(plan, r, path, diffusion_index(rec), "diffusion index log10 ||nu(2)| - |nu(1)||");
+  return true;
+}
+
+bool draw_diffusion(const Plan& plan, const Result& r, const Records&, const std::string& path) {
+  const auto it = r.analyses.find("diffusion");
+  if (it == r.analyses.end()) return false;
+  const nlohmann::json j = nlohmann::json::parse(it->second);
+  if (!j.contains("moments") || !j.contains("along_fit")) return false;
+  render_diffusion(plan, r, j, path);
+  return true;
+}
+
+bool draw_orbits(const Plan& plan, const Result& r, const Records& rec, const std::string& path) {
+  render_trajectories(plan, r, rec, path);
+  return true;
 }
 
 }  // namespace arnoldweb::detail

@@ -16,6 +16,7 @@
 #include "output_table/output_table.hpp"
 #include "pictures/canvas.hpp"
 #include "pictures/indicator_pictures.hpp"
+#include "pictures/picture_table.hpp"
 #include "pictures/sphere_view.hpp"
 
 namespace arnoldweb::detail {
@@ -193,10 +194,16 @@ void write_grid_picture(const Plan& plan, const Result& r, const std::string& pa
   }
 }
 
-void write_indicator_pictures(const Plan& plan, const Result& r, const std::string& dir,
-                              std::vector<std::string>& names) {
+bool draw_map_and_fli(const Plan& plan, const Result& r, const Records& ind, const std::string& path) {
   const Scene& s = plan.scene;
-  if (s.initial != "grid") return;
+  if (!s.fli || ind.reals.empty() || s.grid_kind != "healpix" || r.map.empty() || r.nside <= 0) return false;
+  render_map_and_fli(path, r.map, r.nside, column(ind, AW_IND_FLI), s.grid_nside, picture_title(plan),
+                     picture_caption(r));
+  return true;
+}
+
+void write_dataset_pictures(const Plan& plan, const Result& r, const std::string& dir, std::vector<std::string>& names) {
+  if (plan.scene.initial != "grid") return;
   // every dataset of the output table that names a picture, where the run wrote it
   for (const RecordOutput* row : records_reported(plan.kernel.features)) {
     const Records* rec = r.records_of(row->name);
@@ -206,12 +213,6 @@ void write_indicator_pictures(const Plan& plan, const Result& r, const std::stri
       write_grid_picture(plan, r, dir + "/" + d.picture, column(*rec, d.first), d.picture_label);
       names.push_back(d.picture);
     }
-  }
-  const Records* ind = r.records_of("indicators");
-  if (s.fli && ind && !ind->reals.empty() && s.grid_kind == "healpix" && !r.map.empty() && r.nside > 0) {
-    render_map_and_fli(dir + "/map_and_fli.png", r.map, r.nside, column(*ind, AW_IND_FLI), s.grid_nside,
-                       picture_title(plan), picture_caption(r));
-    names.push_back("map_and_fli.png");
   }
 }
 

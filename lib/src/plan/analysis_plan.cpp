@@ -1,5 +1,5 @@
 // arnoldweb: the planner's part for the frequency analysis, the diffusion
-// samples and the picked trajectories' samples (analysis_plan.hpp).
+// samples and the output table's table keys (analysis_plan.hpp).
 #include "plan/analysis_plan.hpp"
 
 #include <algorithm>
@@ -12,46 +12,24 @@ namespace {
 
 std::string fmt(double v) { return show_number(v); }
 
-// observe.trajectories: picked records, each of every id at every sample, at most
-constexpr std::uint64_t kMaxPickedRecords = 1u << 20;
-
 // The segment's length in T (the shortest sample interval).
 double segment_length(const Scene& scene, const Plan& p) {
   return scene.average / static_cast<double>(p.segments_per_window);
 }
 
-void check_trajectories(const Scene& scene, const Plan& p) {
-  const char* ids_key = scene.trajectory_ids.empty() ? "observe.trajectories.count" : "observe.trajectories.ids";
-  if (!scene.trajectory_ids.empty() && scene.trajectory_count > 0)
-    fail_at(scene, "observe.trajectories.count", "give observe.trajectories.ids or .count, not both");
-  const std::vector<std::int64_t> ids = scene.picked_trajectories();
-  if (static_cast<std::uint64_t>(ids.back()) >= scene.trajectories)
-    fail_at(scene, ids_key,
-            "trajectory " + show_count(static_cast<std::uint64_t>(ids.back())) + " is not in the ensemble (" +
-                "ensemble.trajectories = " + show_count(scene.trajectories) + ": ids 0 to " +
-                show_count(scene.trajectories - 1) + ")");
-  const std::int64_t samples = exact_ratio(scene.duration, scene.trajectory_every);
-  if (samples == 0)
-    fail_at(scene, "observe.trajectories.every",
-            fmt(scene.trajectory_every) + " T does not divide run.duration = " + fmt(scene.duration) + " T");
-  const double segment = segment_length(scene, p);
-  if (exact_ratio(scene.trajectory_every, segment) == 0)
-    fail_at(scene, "observe.trajectories.every",
-            fmt(scene.trajectory_every) + " T is not a multiple of the shortest sample interval, " + fmt(segment) +
-                " T (observe.energy_error.every, observe.frequencies.every, observe.diffusion.every or run.average)");
-  const std::uint64_t records = ids.size() * static_cast<std::uint64_t>(samples + 1);
-  if (records > kMaxPickedRecords)
-    fail_at(scene, "observe.trajectories.every",
-            show_count(ids.size()) + " trajectories x " + show_count(static_cast<std::uint64_t>(samples + 1)) +
-                " samples = " + show_count(records) + " states; at most " + show_count(kMaxPickedRecords) +
-                " are kept: choose a longer interval or fewer trajectories");
-}
-
 }  // namespace
+
+KeyPlan key_plan(const Scene& scene, const Plan& p) {
+  return {scene.trajectories, scene.duration, segment_length(scene, p), p.start_time(), exact_ratio, show_number,
+          show_count};
+}
 
 void plan_analysis(const Scene& scene, const Plan& p) {
   const std::int64_t segments = p.windows * p.segments_per_window;
-  if (scene.samples_trajectories()) check_trajectories(scene, p);
+  for (const KeyTable* t : key_tables())  // the output table's table keys, against the schedule
+    if (t->check && t->on(scene.output_values))
+      if (const KeyProblem why = t->check(*t, scene.output_values, key_plan(scene, p)); !why.key.empty())
+        fail_at(scene, why.key, why.message);
   if (scene.frequencies) {
     const double needed = 2.0 * scene.frequency_samples * scene.frequency_every;
     if (static_cast<double>(segments / p.frequency_stride) < 2.0 * scene.frequency_samples)
@@ -111,14 +89,8 @@ void fill_analysis_ints(const Scene& scene, const Plan& p, IntParams& ip) {
   ip.diffusion_average_stride = p.diffusion_average_stride;
   ip.diffusion_average_points =
       scene.diffusion && scene.diffusion_average > 0 ? exact_ratio(scene.diffusion_average, scene.diffusion_average_every) : 0;
-  ip.pick_stride = 1;
-  if (scene.samples_trajectories()) {
-    const std::vector<std::int64_t> ids = scene.picked_trajectories();
-    ip.pick_count = static_cast<std::int64_t>(ids.size());
-    std::copy(ids.begin(), ids.end(), ip.pick_ids);
-    ip.pick_samples = exact_ratio(scene.duration, scene.trajectory_every);
-    ip.pick_stride = exact_ratio(scene.trajectory_every, segment_length(scene, p));
-  }
+  for (const KeyTable* t : key_tables())
+    if (t->fill) t->fill(*t, scene.output_values, key_plan(scene, p), ip);
 }
 
 void fill_analysis_reals(const Scene& scene, RealParams& rp) {

@@ -1,15 +1,20 @@
 // arnoldweb: the planner's part for the analyses of trajectories over time
 // (docs/frequencies.md): the frequency analysis (observe.frequencies: two
 // windows of samples, their work memory) and the action samples of the
-// diffusion coefficient (observe.diffusion), and the sampled states of picked
-// trajectories (observe.trajectories): their checks against the schedule and
-// their parameters in the kernels' blocks.
+// diffusion coefficient (observe.diffusion), and the output table's table keys
+// (observe.trajectories, ...: their rows' checks and parameters): their checks
+// against the schedule and their parameters in the kernels' blocks.
 #pragma once
 
 #include "arnoldweb/plan.hpp"
+#include "output_table/output_table.hpp"
 #include "params/kernel_params.hpp"
 
 namespace arnoldweb::detail {
+
+// What the output table's table keys take from the plan (KeyPlan): the
+// schedule's facts and the planner's exact ratios and number formats.
+KeyPlan key_plan(const Scene& scene, const Plan& p);
 
 // Checks (SceneError naming the key) after the schedule is made.
 void plan_analysis(const Scene& scene, const Plan& p);

@@ -10,20 +10,23 @@ namespace arnoldweb::detail {
 namespace {
 bool tracks_energy(const Scene& s) { return s.energy_error || s.max_energy_error.has_value(); }
 
-// The rows with one per switch of the output table (asked through features_of),
-// each before the first row of a higher bit.
-std::vector<EffectRow> with_switches(std::vector<EffectRow> rows) {
-  for (const OutputSwitch* w : output_switches()) {
+// The rows with one per switch and per table key of the output table (asked
+// through features_of), each before the first row of a higher bit; then `last`.
+std::vector<EffectRow> with_outputs(std::vector<EffectRow> rows, const std::vector<EffectRow>& last) {
+  const auto insert = [&rows](const std::string& name, std::uint32_t bit) {
     auto at = rows.begin();
-    while (at != rows.end() && at->bit < w->bit) ++at;
-    rows.insert(at, EffectRow{w->effect(), w->bit, nullptr});
-  }
+    while (at != rows.end() && at->bit < bit) ++at;
+    rows.insert(at, EffectRow{name, bit, nullptr});
+  };
+  for (const OutputSwitch* w : output_switches()) insert(w->effect(), w->bit);
+  for (const KeyTable* t : key_tables()) insert(t->effect(), t->bit);
+  rows.insert(rows.end(), last.begin(), last.end());
   return rows;
 }
 }  // namespace
 
 const std::vector<EffectRow>& effects() {
-  static const std::vector<EffectRow> rows = with_switches({
+  static const std::vector<EffectRow> rows = with_outputs({
       {"velocity_map", AW_F_VELOCITY_MAP, [](const Scene& s) { return s.velocity_map; }},
       {"energy_error", AW_F_ENERGY, tracks_energy},
       {"max_energy_error", AW_F_ENERGY_LIMIT, [](const Scene& s) { return s.max_energy_error.has_value(); }},
@@ -34,13 +37,13 @@ const std::vector<EffectRow>& effects() {
       {"confine", AW_F_CONFINE, [](const Scene& s) { return s.confine; }},
       {"frames", AW_F_FRAMES, [](const Scene& s) { return !s.frame_times.empty(); }},
       {"time_reversal", AW_F_REVERSE, nullptr},
-      // the output table's switches ask for their own bits as well (features_of)
+      // the output table's switches and table keys ask for their own bits as well (features_of)
       {"tangent", AW_F_TANGENT, [](const Scene& s) { return s.fli || s.lyapunov; }},
       {"fli", AW_F_FLI, [](const Scene& s) { return s.fli; }},
       {"lyapunov", AW_F_LYAPUNOV, [](const Scene& s) { return s.lyapunov; }},
       {"frequencies", AW_F_FREQUENCIES, [](const Scene& s) { return s.frequencies; }},
       {"diffusion", AW_F_DIFFUSION, [](const Scene& s) { return s.diffusion; }},
-      {"trajectories", AW_F_TRAJECTORIES, [](const Scene& s) { return s.samples_trajectories(); }},
+  }, {
       // states from a file (ensemble.initial = "file"); time slices add it when planned (plan.cpp)
       {"carry", AW_F_CARRY, [](const Scene& s) { return s.initial == "file"; }},
   });
@@ -48,7 +51,7 @@ const std::vector<EffectRow>& effects() {
 }
 
 std::uint32_t features_of(const Scene& scene) {
-  std::uint32_t f = switch_features(scene.switches);
+  std::uint32_t f = switch_features(scene.switches, scene.output_values);
   for (const EffectRow& e : effects())
     if (e.asked && e.asked(scene)) f |= e.bit;
   return f;

@@ -5,14 +5,13 @@
 // to_toml(), the JSON echo in summary.json and the key list of docs/scenes.md
 // (generated: `arnoldweb keys --markdown`) all come from here.
 // Adding a key: a field in Scene (scene.hpp) and a row here; an output's
-// boolean switch is declared by its row of the output table instead.
+// boolean switch and its table keys are declared by its row of the output
+// table instead.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <set>
 
 #include "arnoldweb/methods.hpp"
-#include "aw_params.h"
 #include "output_table/output_table.hpp"
 #include "physics/model_table.hpp"
 #include "scene/reader.hpp"
@@ -597,60 +596,69 @@ Read direction_into(std::array<double, 3> Scene::*f) {
   };
 }
 
-// observe.trajectories (docs/outputs.md, trajectories.h5).
-std::string integer_list(const std::vector<std::int64_t>& v) {
+// The table keys of the output table's rows (lib/src/output_table/, KeyTable),
+// kept in Scene::output_values: the table key (false, or a table of its
+// sub-keys) and one row per sub-key.
+std::string sub_key_literal(const detail::TableSubKey& k, const std::vector<double>& v) {
+  const auto number = [&](double x) {
+    return k.kind == detail::TableSubKey::Kind::Real ? toml_double(x) : std::to_string(static_cast<long long>(x));
+  };
+  if (k.kind != detail::TableSubKey::Kind::Integers) return number(v[0]);
   std::string s = "[";
-  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + std::to_string(v[i]);
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + number(v[i]);
   return s + "]";
 }
-void trajectory_keys(Rows& add) {
-  add("observe.trajectories", "table or false", "{ ids = [i, j, ...], every = T }, { count = n, every = T } or false",
-      "a table { ids = [i, j, ...], every = <T> } or { count = n, every = <T> }, or false",
-      [](const Scene& s) {
-        if (!s.samples_trajectories()) return boolean(false);
-        return "{ " + (s.trajectory_ids.empty() ? std::string() : "ids = " + integer_list(s.trajectory_ids) + ", ") +
-               (s.trajectory_count > 0 ? "count = " + std::to_string(s.trajectory_count) + ", " : std::string()) +
-               "every = " + toml_double(s.trajectory_every) + " }";
-      },
-      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
-        bool on = false;
-        if (r.switch_table(key, n, on, false) && !on) {
-          s.trajectory_ids.clear();
-          s.trajectory_count = 0;
-        }
-      },
-      "The orbits of chosen trajectories: the position (in turns, with the winding counts, and unwrapped), the "
-      "momentum and the energy error E(t) - E(0) of each at t = 0, every, 2 every, ... up to run.duration: "
-      "trajectories.h5. Memory goes with the chosen trajectories, not the ensemble.",
-      Shape::Composite);
-  add("observe.trajectories.ids", "array of integers", "1 to 1024 different ids from 0 to ensemble.trajectories - 1",
-      "an array of 1 to 1024 different integers >= 0 (trajectory ids)",
-      [](const Scene& s) { return s.trajectory_ids.empty() ? std::string() : integer_list(s.trajectory_ids); },
-      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
-        std::vector<double> v;
-        if (!r.reals(key, n, v, 0, [](const std::vector<double>& x) {
-              if (x.empty() || x.size() > AW_MAX_PICKS) return false;
-              std::set<double> seen;
-              for (double d : x)
-                if (!(d >= 0 && d < 9e15 && d == std::floor(d)) || !seen.insert(d).second) return false;
-              return true;
-            }))
-          return;
-        s.trajectory_ids.assign(v.begin(), v.end());
-      },
-      "The trajectories to record, by index (trajectory i of the ensemble; the same bits as in a run of the whole "
-      "ensemble).");
-  add("observe.trajectories.count", "integer", "1 to 1024, at most ensemble.trajectories",
-      "an integer from 1 to 1024", [](const Scene& s) {
-        return s.trajectory_count > 0 ? std::to_string(s.trajectory_count) : std::string();
-      },
-      integer_into(&Scene::trajectory_count, [](std::int64_t v) { return v >= 1 && v <= AW_MAX_PICKS; }),
-      "Record trajectories 0 .. count - 1 (instead of ids).");
-  add("observe.trajectories.every", "float", "> 0, divides run.duration, a multiple of the shortest sample interval",
-      "a finite float greater than 0 (in units of T)", real_of(&Scene::trajectory_every),
-      real_into(&Scene::trajectory_every, positive),
-      "Sample interval, in T: a multiple of the shortest sample interval (observe.energy_error.every, or "
-      "run.average without it; see observe.frequencies.every).");
+void read_sub_key(const detail::TableSubKey& k, Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+  std::vector<double> v(1);
+  bool read = false;
+  switch (k.kind) {
+    case detail::TableSubKey::Kind::Integer: {
+      std::int64_t x = 0;
+      read = r.integer(key, n, x, [&](std::int64_t i) { return k.ok({static_cast<double>(i)}); });
+      v[0] = static_cast<double>(x);
+      break;
+    }
+    case detail::TableSubKey::Kind::Real:
+      read = r.real(key, n, v[0], [&](double x) { return k.ok({x}); });
+      break;
+    case detail::TableSubKey::Kind::Integers:
+      read = r.reals(key, n, v, 0, k.ok);
+      break;
+  }
+  if (read) s.output_values[key] = v;
+}
+void output_table_keys(Rows& add) {
+  for (const detail::KeyTable* t : detail::key_tables()) {
+    const detail::KeyTable& table = *t;  // a row of the static output table
+    add(table.key, "table or false", table.allowed, table.must,
+        [&table](const Scene& s) {
+          if (!table.on(s.output_values)) return boolean(false);
+          std::string text;
+          for (const detail::TableSubKey& k : table.keys) {
+            const std::vector<double> v = table.value(s.output_values, k.name);
+            if (!v.empty()) text += (text.empty() ? "" : ", ") + k.name + " = " + sub_key_literal(k, v);
+          }
+          return "{ " + text + " }";
+        },
+        [&table](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+          bool on = false;
+          if (r.switch_table(key, n, on, false) && !on)
+            for (const detail::TableSubKey& k : table.keys) s.output_values.erase(table.sub(k.name));
+        },
+        table.meaning, Shape::Composite);
+    for (const detail::TableSubKey& k : table.keys) {
+      const char* type = k.kind == detail::TableSubKey::Kind::Integers ? "array of integers"
+                         : k.kind == detail::TableSubKey::Kind::Integer ? "integer"
+                                                                        : "float";
+      add(table.sub(k.name), type, k.allowed, k.must,
+          [&table, &k](const Scene& s) {
+            const std::vector<double> v = table.value(s.output_values, k.name);
+            return v.empty() ? std::string() : sub_key_literal(k, v);
+          },
+          [&k](Reader& r, const std::string& key, const toml::node& n, Scene& s) { read_sub_key(k, r, key, n, s); },
+          k.meaning);
+    }
+  }
 }
 
 void analysis_keys(Rows& add) {
@@ -727,7 +735,6 @@ void analysis_keys(Rows& add) {
       "a finite float greater than 0 (in units of T)", real_of(&Scene::diffusion_average_every),
       real_into(&Scene::diffusion_average_every, positive),
       "Interval between the actions averaged into a sample, in T (a multiple of integrator.step).");
-  trajectory_keys(add);
 }
 
 void output_keys(Rows& add) {
@@ -873,6 +880,7 @@ std::vector<KeySpec> build() {
   indicator_keys(rows);
   output_switch_keys(rows);
   analysis_keys(rows);
+  output_table_keys(rows);
   output_keys(rows);
   panel_keys(rows);
   return k;

@@ -8,6 +8,7 @@
 
 #include "arnoldweb/errors.hpp"
 #include "os/regular_file.hpp"
+#include "output_table/output_table.hpp"
 #include "scene/scene_internal.hpp"
 
 namespace arnoldweb {
@@ -33,11 +34,11 @@ bool Scene::writes_format(const std::string& f) const {
   return std::find(formats.begin(), formats.end(), f) != formats.end();
 }
 
-std::vector<std::int64_t> Scene::picked_trajectories() const {
-  std::vector<std::int64_t> ids = trajectory_ids;
-  for (std::int64_t k = 0; k < trajectory_count; ++k) ids.push_back(k);
-  std::sort(ids.begin(), ids.end());
-  return ids;
+std::vector<double> Scene::output_value(const std::string& key) const {
+  for (const detail::KeyTable* t : detail::key_tables())
+    for (const detail::TableSubKey& k : t->keys)
+      if (t->sub(k.name) == key) return t->value(output_values, k.name);
+  return {};
 }
 
 std::string Scene::origin(const std::string& key) const {
