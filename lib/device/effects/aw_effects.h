@@ -56,7 +56,7 @@ AW_FN void aw_fx_begin(aw_config cfg, aw_fx* fx, aw_lstate* s, lreal accepted, a
   aw_tangent_begin(&fx->tangent, rp); /* a few stores; every field defined for the run-time bits of the cpu backend */
   for (int c = 0; c < 3; ++c) fx->asum[c] = AW_LSPLAT(AW_R(0.0));
   if (AW_HAS(AW_F_DIFFUSION)) aw_actions_store(s->px, s->py, s->pz, 0, l, ip, out);
-  if (AW_HAS(AW_F_TRAJECTORIES)) aw_trajectories_store(s, AW_LSPLAT(AW_R(0.0)), 0, l, ip, out);
+  if (AW_HAS(AW_F_TRAJECTORIES)) aw_trajectories_store(s, fx->e0, 0, l, rp, ip, out);
 }
 
 /* The force at the initial state (and, with the indicators, the Hessian). */
@@ -107,7 +107,7 @@ AW_FN void aw_fx_sample(aw_config cfg, aw_fx* fx, const aw_lstate* s, aw_lanes l
   if (AW_HAS(AW_F_TRAJECTORIES)) {
     aw_count_next(&fx->picks_at, ip->pick_stride);
     if (fx->picks_at.r == 0 && fx->picks_at.q <= ip->pick_samples)
-      aw_trajectories_store(s, aw_energy(s, rp) - fx->e0, fx->picks_at.q, l, ip, out);
+      aw_trajectories_store(s, fx->e0, fx->picks_at.q, l, rp, ip, out);
   }
 }
 
