@@ -71,6 +71,25 @@ typedef std::uint64_t aw_u64;
 typedef std::int64_t aw_i64;
 #endif
 
+/* AW_UNROLL_STAGES: the stage loops of the stepper (aw_stepper.h) unrolled in
+ * full on CUDA (-DAW_CUDA_UNROLL_STAGES=1, an NVRTC option): the same
+ * operations in the same order, so the same bits; what it saves is the
+ * per-stage re-materialisation of the sincos constants and loads of the
+ * coefficients (bench/gpu/sass_count.py). Nothing elsewhere. */
+#if defined(AW_CUDA) && defined(AW_CUDA_UNROLL_STAGES) && AW_CUDA_UNROLL_STAGES
+#define AW_UNROLL_STAGES _Pragma("unroll")
+#else
+#define AW_UNROLL_STAGES
+#endif
+/* for (p = 0; p < n; ++p) over a work-item's trajectories (aw_ensemble.h's
+ * AW_ITEMS, a compile-time constant): unrolled on CUDA, so that their
+ * operations interleave. */
+#if defined(AW_CUDA)
+#define AW_EACH_ITEM(p, n) _Pragma("unroll") for (int p = 0; p < (n); ++p)
+#else
+#define AW_EACH_ITEM(p, n) for (int p = 0; p < (n); ++p)
+#endif
+
 /* ------------------------------------------------------------ precision */
 #ifdef AW_FLOAT
 typedef float real;
