@@ -16,14 +16,18 @@ an angle of the wrap; 3 stages + 3 a step of the paper's model) gives the
 trajectory-steps of an iteration (two where two trajectories share a thread).
 
   python3 bench/gpu/sass_count.py [--scene S] [--defines D] [--options O] [--sass FILE]
+  python3 bench/gpu/sass_count.py --variants "default=;unroll=-DAW_CUDA_UNROLL_STAGES=1"
 
   --scene    a scene (default scenes/fig3_e15.toml: Figure 3 panel (a));
              its [[panel]] sections are left out
   --defines  the kernel's -D options instead of the scene's
   --options  extra NVRTC options, e.g. "-DAW_TWO_PER_THREAD=1"
+  --variants a Markdown table, a row per variant (the format of
+             bench/gpu/rates.sh's AW_RATES_VARIANTS: name=options, ';' between)
   --sass     also write the disassembly here
-nvdisasm or cuobjdump is taken from $NVDISASM, PATH, /usr/local/cuda/bin or
-pip's nvidia-cuda-nvdisasm (pip install nvidia-cuda-nvdisasm).
+nvdisasm (or cuobjdump) is taken from $NVDISASM ($CUOBJDUMP), PATH,
+/usr/local/cuda/bin or pip's packages (pip install nvidia-cuda-nvdisasm
+nvidia-cuda-cuobjdump); cuobjdump also gives the registers.
 """
 import argparse
 import collections
@@ -52,10 +56,9 @@ CLASSES = [  # (name, predicate on the opcode's first word)
 
 
 def tool(*names):
-    env = os.environ.get("NVDISASM")
-    if env:
-        return env
     for n in names:
+        if os.environ.get(n.upper()):
+            return os.environ[n.upper()]
         found = shutil.which(n) or (os.path.exists(f"/usr/local/cuda/bin/{n}") and f"/usr/local/cuda/bin/{n}")
         if found:
             return found
@@ -63,7 +66,8 @@ def tool(*names):
             cand = glob.glob(os.path.join(p, "nvidia", "cu*", "bin", n))
             if cand:
                 return cand[0]
-    sys.exit("sass_count: neither nvdisasm nor cuobjdump found (pip install nvidia-cuda-nvdisasm, or set $NVDISASM)")
+    sys.exit(f"sass_count: {' or '.join(names)} not found (pip install nvidia-cuda-nvdisasm nvidia-cuda-cuobjdump, "
+             f"or set ${names[0].upper()})")
 
 
 def scene_defines(scene):
@@ -81,6 +85,17 @@ def scene_defines(scene):
         if line.startswith("kernel "):
             return line.split(None, 1)[1].strip()
     sys.exit(f"sass_count: `arnoldweb check {scene}` printed no kernel line")
+
+
+def resources(cubin):
+    """aw_ensemble's registers and stack from cuobjdump -res-usage, or '' without cuobjdump."""
+    try:
+        dump = tool("cuobjdump")
+        out = subprocess.run([dump, "-res-usage", cubin], capture_output=True, text=True, check=True).stdout
+    except (SystemExit, subprocess.CalledProcessError):
+        return ""
+    m = re.search(r"Function aw_ensemble:\s*\n\s*REG:(\d+) STACK:(\d+)", out)
+    return f"{m.group(1)} registers, stack {m.group(2)} bytes" if m else ""
 
 
 def disassemble(cubin):
@@ -158,38 +173,25 @@ def compile_and_disassemble(a, defines):
                            env=env, capture_output=True, text=True)
         if r.returncode:
             sys.exit(f"sass_count: arnoldweb_cubin failed:\n{r.stderr}")
-        return r.stdout.strip(), disassemble(cubin)
+        return r.stdout.strip(), disassemble(cubin), resources(cubin)
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--scene", default=os.path.join(ROOT, "scenes", "fig3_e15.toml"))
-    ap.add_argument("--defines")
-    ap.add_argument("--options", default="")
-    ap.add_argument("--sass")
-    ap.add_argument("--cubin", help="count this cubin instead of compiling one (with --defines)")
-    ap.add_argument("--arch", default="90")
-    a = ap.parse_args()
-    defines = a.defines or scene_defines(a.scene)
-    if a.cubin:
-        options, sass = "(" + a.cubin + ") " + defines, disassemble(a.cubin)
-    else:
-        options, sass = compile_and_disassemble(a, defines)
+def step_counts(sass, defines):
+    """(per-step Counter of opcodes, description of the loops, trajectory-steps an iteration)."""
     stages = int(re.search(r"-DAW_STAGES=(\d+)", defines).group(1))
     kick_first = re.search(r"-DAW_KICK_FIRST=1", defines) is not None
-    if a.sass:
-        with open(a.sass, "w") as f:
-            f.write(sass)
     ins, labels = parse(sass)
     lp = loops(ins, labels)
     # the step loop: the smallest loop with the wrap's roundings (x + 1.5 2^52 by DADD, 3 a step; the
-    # sincos round by DFMA); an inner loop of it with a force evaluation (3 subtractions) is the stage loop
+    # sincos round by DFMA); an inner loop of it with force evaluations (3 subtractions a trajectory)
+    # is the stage loop
     with_wrap = [he for he in lp.items() if count(ins, *he)["(wrap roundings)"] >= 3]
     if not with_wrap:
         sys.exit("sass_count: no loop of aw_ensemble holds the wrap's roundings (not the paper's stepper?)")
     outer = min(with_wrap, key=lambda he: he[1] - he[0])
-    stage_loops = [(h, e) for h, e in lp.items() if outer[0] < h and e < outer[1]
-                   and count(ins, h, e)["(magic subtractions)"] == 3]
+    subtractions = lambda he: count(ins, *he)["(magic subtractions)"]
+    stage_loops = [(h, e) for h, e in lp.items()
+                   if outer[0] < h and e < outer[1] and subtractions((h, e)) and subtractions((h, e)) % 3 == 0]
     trips = stages - 1 if kick_first else stages
     step = count(ins, *outer, skip=stage_loops)
     shape = f"step loop {outer[0]:#06x}-{outer[1]:#06x}"
@@ -200,18 +202,61 @@ def main():
     if not stage_loops:
         shape += " (stages unrolled)"
     per_iter = step["(wrap roundings)"] / 3
-    print(f"options   {options}")
-    print(f"loop      {shape}; {per_iter:g} trajectory-step(s) an iteration; "
-          f"{step['(magic subtractions)'] / per_iter:g} rounding subtractions a step (3 stages + 3 = {3 * stages + 3})")
-    by_class = collections.Counter()
+    shape += (f"; {per_iter:g} trajectory-step(s) an iteration; {step['(magic subtractions)'] / per_iter:g} "
+              f"rounding subtractions a step (3 stages + 3 = {3 * stages + 3})")
+    return step, shape, per_iter
+
+
+def by_class(step, per_iter):
+    c = collections.Counter()
     for op, n in step.items():
         if not op.startswith("("):
-            by_class[classify(op)] += n
-    total = sum(by_class.values())
+            c[classify(op)] += n / per_iter
+    return c
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--scene", default=os.path.join(ROOT, "scenes", "fig3_e15.toml"))
+    ap.add_argument("--defines")
+    ap.add_argument("--options", default="")
+    ap.add_argument("--variants", help='a table of variants, as AW_RATES_VARIANTS: "default=;name=-DX=1;..."')
+    ap.add_argument("--sass")
+    ap.add_argument("--cubin", help="count this cubin instead of compiling one (with --defines)")
+    ap.add_argument("--arch", default="90")
+    a = ap.parse_args()
+    defines = a.defines or scene_defines(a.scene)
+    if a.variants:
+        names = [c for c, _ in CLASSES]
+        print("| variant (NVRTC options) | " + " | ".join(names) + " | all | registers |")
+        print("|---" * (len(names) + 3) + "|")
+        for v in a.variants.split(";"):
+            name, _, options = v.partition("=")
+            a.options = options
+            _, sass, res = compile_and_disassemble(a, defines)
+            step, _, per_iter = step_counts(sass, defines)
+            c = by_class(step, per_iter)
+            print(f"| {name} (" + (f"`{options}`" if options else "none") + ") | " +
+                  " | ".join(f"{c[n]:g}" for n in names) +
+                  f" | {sum(c.values()):g} | {res} |")
+        return
+    if a.cubin:
+        options, sass, res = "(" + a.cubin + ") " + defines, disassemble(a.cubin), resources(a.cubin)
+    else:
+        options, sass, res = compile_and_disassemble(a, defines)
+    if a.sass:
+        with open(a.sass, "w") as f:
+            f.write(sass)
+    step, shape, per_iter = step_counts(sass, defines)
+    c = by_class(step, per_iter)
+    print(f"options   {options}")
+    print(f"loop      {shape}")
+    if res:
+        print(f"kernel    {res}")
     print(f"{'class':24s} {'per step':>9s}")
     for name, _ in CLASSES:
-        print(f"{name:24s} {by_class[name] / per_iter:9.1f}")
-    print(f"{'all':24s} {total / per_iter:9.1f}")
+        print(f"{name:24s} {c[name]:9.1f}")
+    print(f"{'all':24s} {sum(c.values()):9.1f}")
     ops = sorted(((n, op) for op, n in step.items() if not op.startswith("(")), reverse=True)
     print("opcodes per step: " + ", ".join(f"{op} {n / per_iter:g}" for n, op in ops))
 
