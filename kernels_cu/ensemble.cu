@@ -28,9 +28,8 @@ __shared__ real aw_freq_window_table[AW_FREQ_WINDOW_TABLE];
  * lane, active or not (aw_fx_frequencies.h), and a pair's second trajectory
  * may lie past the chunk's last block. */
 #if defined(AW_CUDA_PAIR) && AW_CUDA_PAIR && !(AW_FEATURES & AW_F_FREQUENCIES)
+#undef AW_ITEMS /* aw_dialect.h's default, 1; read where the core below is compiled */
 #define AW_ITEMS 2
-#else
-#define AW_ITEMS 1
 #endif
 #include "aw_ensemble.h"
 #include "aw_reduce.h"

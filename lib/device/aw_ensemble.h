@@ -18,15 +18,6 @@
 #include "effects/aw_effects.h"
 #include "effects/aw_fx_carry.h"
 
-/* Trajectories (of AW_LANES lanes each) per work-item, taken a stage at a
- * time in turn (aw_segment_items): 1, or 2 on CUDA with -DAW_CUDA_PAIR=1 (an
- * NVRTC option; the cuda backend's threads then take two neighbouring
- * trajectories each, kernels_cu/ensemble.cu). Each trajectory sees the same
- * operations as alone: the same bits. */
-#ifndef AW_ITEMS
-#define AW_ITEMS 1
-#endif
-
 /* One launch of the lanes' trajectories over the segments [seg_first,
  * seg_end) of their schedule (ip->windows windows of ip->segments segments;
  * a segment is the steps between two energy samples). A launch that starts at
@@ -45,25 +36,28 @@ AW_FN void aw_ensemble_item(aw_config cfg, aw_lanes l0, aw_i64 seg_first, aw_i64
   aw_lanes l[AW_ITEMS];
   const aw_i64 segments = ip->segments;
   AW_EACH_ITEM(p, AW_ITEMS) {
-    l[p] = l0;
-    l[p].first = l0.first + (aw_u64)(p * AW_LANES);
+    aw_lstate* sp = &s[AW_ITEM(p)];
+    aw_fx* fp = &fx[AW_ITEM(p)];
+    aw_window_start* wp = &ws[AW_ITEM(p)];
+    l[AW_ITEM(p)] = l0;
+    l[AW_ITEM(p)].first = l0.first + (aw_u64)(p * AW_LANES);
     if (seg_first == 0) {
       int given[AW_LANES] = {0}; /* read only where aw_carry_load_state set it */
       lreal accepted = AW_LSPLAT(AW_R(1.0));
       if (AW_HAS(AW_F_CARRY) && cfg.initial == AW_INITIAL_FILE)
-        aw_carry_load_state(&s[p], given, out, ip, l[p]);
+        aw_carry_load_state(sp, given, out, ip, l[AW_ITEM(p)]);
       else
-        accepted = aw_initial_state(&s[p], cfg.initial, l[p].first, rp, ip);
-      aw_fx_begin(cfg, &fx[p], &s[p], accepted, l[p], rp, ip, out);
+        accepted = aw_initial_state(sp, cfg.initial, l[AW_ITEM(p)].first, rp, ip);
+      aw_fx_begin(cfg, fp, sp, accepted, l[AW_ITEM(p)], rp, ip, out);
       if (AW_HAS(AW_F_CARRY) && cfg.initial == AW_INITIAL_FILE)
-        for (int j = 0; j < AW_LANES; ++j) fx[p].status[j] = given[j]; /* a state flagged before stays flagged */
-      ws[p].ux = s[p].ux, ws[p].uy = s[p].uy, ws[p].uz = s[p].uz; /* the first window starts here */
-      ws[p].wx = s[p].wx, ws[p].wy = s[p].wy, ws[p].wz = s[p].wz;
+        for (int j = 0; j < AW_LANES; ++j) fp->status[j] = given[j]; /* a state flagged before stays flagged */
+      wp->ux = sp->ux, wp->uy = sp->uy, wp->uz = sp->uz; /* the first window starts here */
+      wp->wx = sp->wx, wp->wy = sp->wy, wp->wz = sp->wz;
     } else {
-      aw_carry_load(&s[p], &fx[p], &ws[p], out, ip, l[p]);
+      aw_carry_load(sp, fp, wp, out, ip, l[AW_ITEM(p)]);
     }
-    aw_fx_first_force(cfg, &fx[p], &s[p], rp);
-    aw_fx_counts_begin(cfg, &fx[p], seg_first, ip);
+    aw_fx_first_force(cfg, fp, sp, rp);
+    aw_fx_counts_begin(cfg, fp, seg_first, ip);
   }
 
   aw_count at = aw_count_at(seg_first, segments); /* (window, segment g within it) of k */
@@ -72,24 +66,27 @@ AW_FN void aw_ensemble_item(aw_config cfg, aw_lanes l0, aw_i64 seg_first, aw_i64
     aw_count_next(&at, segments);
     if (g == 0) {
       AW_EACH_ITEM(p, AW_ITEMS) {
-        ws[p].ux = s[p].ux, ws[p].uy = s[p].uy, ws[p].uz = s[p].uz;
-        ws[p].wx = s[p].wx, ws[p].wy = s[p].wy, ws[p].wz = s[p].wz;
-        aw_fx_window_begin(cfg, &fx[p]);
+        const aw_lstate* sp = &s[AW_ITEM(p)];
+        aw_window_start* wp = &ws[AW_ITEM(p)];
+        wp->ux = sp->ux, wp->uy = sp->uy, wp->uz = sp->uz;
+        wp->wx = sp->wx, wp->wy = sp->wy, wp->wz = sp->wz;
+        aw_fx_window_begin(cfg, &fx[AW_ITEM(p)]);
       }
     }
     aw_fx_segment(cfg, fx, s, AW_ITEMS, ip->steps_per_segment, rp);
     AW_EACH_ITEM(p, AW_ITEMS) {
-      aw_fx_sample(cfg, &fx[p], &s[p], l[p], rp, ip, out);
+      const aw_lstate* sp = &s[AW_ITEM(p)];
+      const aw_window_start* wp = &ws[AW_ITEM(p)];
+      aw_fx_sample(cfg, &fx[AW_ITEM(p)], sp, l[AW_ITEM(p)], rp, ip, out);
       if (g == segments - 1) {
         /* displacement over the window, in turns: exact integer part + wrapped part */
-        const aw_lstate* q = &s[p];
-        lreal dx = AW_INT_TO_LANE(q->wx - ws[p].wx) + (q->ux - ws[p].ux);
-        lreal dy = AW_INT_TO_LANE(q->wy - ws[p].wy) + (q->uy - ws[p].uy);
-        lreal dz = AW_INT_TO_LANE(q->wz - ws[p].wz) + (q->uz - ws[p].uz);
+        lreal dx = AW_INT_TO_LANE(sp->wx - wp->wx) + (sp->ux - wp->ux);
+        lreal dy = AW_INT_TO_LANE(sp->wy - wp->wy) + (sp->uy - wp->uy);
+        lreal dz = AW_INT_TO_LANE(sp->wz - wp->wz) + (sp->uz - wp->uz);
         lreal sane = AW_SELECT(AW_LSPLAT(AW_R(0.0)), AW_LSPLAT(AW_R(1.0)),
-                               AW_ISFINITE(q->ux) & AW_ISFINITE(q->uy) & AW_ISFINITE(q->uz) & AW_ISFINITE(q->px) &
-                                   AW_ISFINITE(q->py) & AW_ISFINITE(q->pz));
-        aw_fx_window_end(cfg, &fx[p], window, dx, dy, dz, sane, l[p], rp, ip, out);
+                               AW_ISFINITE(sp->ux) & AW_ISFINITE(sp->uy) & AW_ISFINITE(sp->uz) &
+                                   AW_ISFINITE(sp->px) & AW_ISFINITE(sp->py) & AW_ISFINITE(sp->pz));
+        aw_fx_window_end(cfg, &fx[AW_ITEM(p)], window, dx, dy, dz, sane, l[AW_ITEM(p)], rp, ip, out);
       }
     }
   }
@@ -97,18 +94,18 @@ AW_FN void aw_ensemble_item(aw_config cfg, aw_lanes l0, aw_i64 seg_first, aw_i64
   *esum = AW_R(0.0);
   if (seg_end < ip->windows * segments) { /* a time slice: the next launch goes on from here */
     if (AW_HAS(AW_F_CARRY)) {
-      AW_EACH_ITEM(p, AW_ITEMS) aw_carry_save(&s[p], &fx[p], &ws[p], out, ip, l[p]);
+      AW_EACH_ITEM(p, AW_ITEMS) aw_carry_save(&s[AW_ITEM(p)], &fx[AW_ITEM(p)], &ws[AW_ITEM(p)], out, ip, l[AW_ITEM(p)]);
     }
     return;
   }
   AW_EACH_ITEM(p, AW_ITEMS) {
     real m, sum;
-    if (AW_HAS(AW_F_REVERSE)) aw_reverse(cfg, &s[p], rp, ip);
-    aw_fx_finish(cfg, &fx[p], &s[p], l[p], out, &m, &sum, rp, ip);
-    if (p == 0) {
+    if (AW_HAS(AW_F_REVERSE)) aw_reverse(cfg, &s[AW_ITEM(p)], rp, ip);
+    aw_fx_finish(cfg, &fx[AW_ITEM(p)], &s[AW_ITEM(p)], l[AW_ITEM(p)], out, &m, &sum, rp, ip);
+    if (AW_ITEM(p) == 0) {
       *emax = m;
       *esum = sum;
-    } else {
+    } else { /* the pair's (max, sum), as the work-group reduction combines items */
       *emax = (m > *emax) ? m : *emax;
       *esum = *esum + sum;
     }

@@ -73,7 +73,7 @@ AW_FN void aw_fx_first_force(aw_config cfg, aw_fx* fx, aw_lstate* s, AW_CONSTANT
 AW_FN void aw_fx_segment(aw_config cfg, aw_fx* fx, aw_lstate* s, int items, aw_i64 nsteps,
                          AW_CONSTANT aw_rparams* rp) {
   if (AW_HAS(AW_F_TANGENT)) {
-    AW_EACH_ITEM(p, items) aw_segment_tangent(cfg, &s[p], &fx[p].tangent, nsteps, rp);
+    AW_EACH_ITEM(p, items) aw_segment_tangent(cfg, &s[AW_ITEM(p)], &fx[AW_ITEM(p)].tangent, nsteps, rp);
   } else {
     aw_segment_items(s, items, nsteps, rp, cfg.stages, cfg.kick_first, cfg.gradient);
   }
