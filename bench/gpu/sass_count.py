@@ -6,22 +6,23 @@ nvdisasm or cuobjdump).
 The kernel of a configuration is compiled as the cuda backend compiles it (the
 defines `arnoldweb check` prints for a scene, the backend's NVRTC options, and
 the extra options given here as ARNOLDWEB_NVRTC_OPTIONS would give them). The
-step loop is found from the control flow: the loops of aw_ensemble are the
-backward branches; the hottest is the innermost loop with the most FP64
-instructions. Where it is the stage loop (a force evaluation an iteration, the
-stage count not unrolled), a step is its enclosing loop's own instructions plus
-(stages - 1) of it (kick-first; stages for drift-first), else the loop itself.
-The count of rounding-constant subtractions (x - 1.5 2^52: one a sincos, one
-an angle of the wrap; 3 stages + 3 a step of the paper's model) gives the
-trajectory-steps of an iteration (two where two trajectories share a thread).
+step loop is found from the control flow (the loops of aw_ensemble are its
+backward branches): the smallest loop that holds the wrap's three roundings
+(x + 1.5 2^52 by DADD; a sincos rounds by DFMA) is the step loop, and a loop
+inside it with force evaluations (x - 1.5 2^52: three a force) is the stage
+loop, counted (stages - 1) times a step (kick-first; stages for drift-first);
+with the stages unrolled there is none. The wrap's roundings give the
+trajectory-steps of an iteration (two where two trajectories share a thread);
+the subtractions, 3 stages + 3 a step of the paper's model, check it. Written
+for the paper's model (seibert2011) and its kinetic energy.
 
-  python3 bench/gpu/sass_count.py [--scene S] [--defines D] [--options O] [--sass FILE]
+  python3 bench/gpu/sass_count.py [--scene S] [--defines=D] [--options=O] [--sass FILE]
   python3 bench/gpu/sass_count.py --variants "default=;unroll=-DAW_CUDA_UNROLL_STAGES=1"
 
   --scene    a scene (default scenes/fig3_e15.toml: Figure 3 panel (a));
              its [[panel]] sections are left out
   --defines  the kernel's -D options instead of the scene's
-  --options  extra NVRTC options, e.g. "-DAW_TWO_PER_THREAD=1"
+  --options  extra NVRTC options, e.g. --options="-DAW_CUDA_PAIR=1" (with =)
   --variants a Markdown table, a row per variant (the format of
              bench/gpu/rates.sh's AW_RATES_VARIANTS: name=options, ';' between)
   --sass     also write the disassembly here
