@@ -8,15 +8,17 @@
 # Each kernel variant of AW_RATES_VARIANTS runs both, in turn, REPEAT times (A B A B ...), so that
 # a variant and the default are compared inside one call on one machine:
 #   AW_RATES_VARIANTS="default=;two=-DAW_SOMETHING=1"   name=NVRTC options (ARNOLDWEB_NVRTC_OPTIONS)
-# A warm-up run of each variant (2^20 trajectories) fills its kernel cache first, so that no timed
-# run compiles. The map digest of each Figure-3 run is printed: variants that only change the
-# schedule of the work must give the default's digest.
+# A warm-up run of each variant (2^20 trajectories of Figure 3, 10 T of Figure 4's schedule) fills
+# its kernel caches first, so that no timed run compiles. The map digest of each Figure-3 run is
+# printed, and at the end whether every variant's digest is the first variant's: variants that only
+# change the schedule of the work (the kernel levers of docs/performance.md) must give the same.
 #
 #   bash bench/gpu/rates.sh ARNOLDWEB DEVICE OUTDIR [REPEAT] [DURATION_T]
 set -uo pipefail
 AW=$1; DEV=$2; OUT=$3; REPEAT=${4:-2}; DURATION=${5:-1000}
 N=${AW_RATES_N:-100000000}
 mkdir -p "$OUT"
+rm -f "$OUT/fig3a-lines.txt"
 sed '/^\[\[panel\]\]/,$d' scenes/fig3_e15.toml >"$OUT/fig3a.toml"
 IFS=';' read -r -a variants <<<"${AW_RATES_VARIANTS:-default=}"
 
@@ -41,14 +43,24 @@ PY
 for v in "${variants[@]}"; do
   name=${v%%=*}
   ARNOLDWEB_NVRTC_OPTIONS="${v#*=}" fig3a "warmup-$name" 1048576 >/dev/null
+  ARNOLDWEB_NVRTC_OPTIONS="${v#*=}" AW_SMALL_N_SIZES=32768 bash bench/gpu/small_n.sh "$AW" 10 "$DEV" >/dev/null
 done
 for r in $(seq 1 "$REPEAT"); do
   for v in "${variants[@]}"; do
     name=${v%%=*}
     echo "== round $r, variant $name (NVRTC options: '${v#*=}')"
     echo " Figure 3 (a), $N trajectories x 5000 steps, $DEV:"
-    ARNOLDWEB_NVRTC_OPTIONS="${v#*=}" fig3a "fig3a-$name-$r" "$N"
+    ARNOLDWEB_NVRTC_OPTIONS="${v#*=}" fig3a "fig3a-$name-$r" "$N" | tee -a "$OUT/fig3a-lines.txt"
     echo " Figure 4's schedule, $DURATION T, $DEV:"
     ARNOLDWEB_NVRTC_OPTIONS="${v#*=}" AW_SMALL_N_SIZES=32768 bash bench/gpu/small_n.sh "$AW" "$DURATION" "$DEV"
   done
 done
+# every Figure-3 map digest against the first variant's (same bits per trajectory: same map)
+python3 - "$OUT/fig3a-lines.txt" <<'PY'
+import re, sys
+runs = [(l.split()[0], m.group(1)) for l in open(sys.argv[1]) if (m := re.search(r"map (\S+),", l))]
+if runs:
+    first = runs[0][1]
+    odd = sorted({name for name, d in runs if d != first})
+    print("== map digests: " + ("all the same as " + runs[0][0] + "'s" if not odd else "DIFFER from " + runs[0][0] + "'s: " + ", ".join(odd)))
+PY

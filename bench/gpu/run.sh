@@ -38,7 +38,8 @@
 # rates: build the program, then bench/gpu/rates.sh on the first CUDA device: Figure 3 panel (a)
 # (1e8 x 5000 steps, Yoshida-6A, double; trajectory-steps/s) and Figure 4's schedule at N = 32,768,
 # the GPU rows of issue 29, each kernel variant of AW_RATES_VARIANTS (name=NVRTC options, ';'
-# between; default: the default kernel only) in turn, AW_RATES_REPEAT rounds (default 2).
+# between; default: the default kernel only) in turn, AW_RATES_REPEAT rounds (default 2), each
+# Figure-3 run's map digest and at the end whether they are all the first variant's.
 # build: only the program (build-gpu/arnoldweb) and the device list; bench/gpu/campaign.sh builds with it.
 # parity: build the program and the tests, the GPU parity suites (AW_PARITY_TESTS, a ctest regex;
 # default: parity, open runs, frequency runs and order on CUDA and NVIDIA OpenCL), then the

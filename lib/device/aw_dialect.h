@@ -71,6 +71,33 @@ typedef std::uint64_t aw_u64;
 typedef std::int64_t aw_i64;
 #endif
 
+/* AW_UNROLL_STAGES: the stage loops of the stepper (aw_stepper.h) unrolled in
+ * full on CUDA (-DAW_CUDA_UNROLL_STAGES=1, an NVRTC option): the same
+ * operations in the same order, so the same bits; what it saves is the
+ * per-stage re-materialisation of the sincos constants and loads of the
+ * coefficients (bench/gpu/sass_count.py). Nothing elsewhere. */
+#if defined(AW_CUDA) && defined(AW_CUDA_UNROLL_STAGES) && AW_CUDA_UNROLL_STAGES
+#define AW_UNROLL_STAGES _Pragma("unroll")
+#else
+#define AW_UNROLL_STAGES
+#endif
+/* AW_ITEMS: trajectories (of AW_LANES lanes each) per work-item, taken a
+ * stage at a time in turn (aw_stepper.h's aw_segment_items): 1, or 2 on CUDA
+ * with -DAW_CUDA_PAIR=1 (kernels_cu/ensemble.cu). AW_EACH_ITEM(p, n) is
+ * for (p = 0; p < n; ++p) over them, unrolled on CUDA so that their operations
+ * interleave; their states are s[AW_ITEM(p)], a literal 0 where there is one
+ * (an array indexed by a loop's variable stays in memory until the loop is
+ * unrolled: the cpu backend's kernels were 2 % slower so). */
+#ifndef AW_ITEMS
+#define AW_ITEMS 1
+#endif
+#if defined(AW_CUDA)
+#define AW_EACH_ITEM(p, n) _Pragma("unroll") for (int p = 0; p < (n); ++p)
+#else
+#define AW_EACH_ITEM(p, n) for (int p = 0; p < (n); ++p)
+#endif
+#define AW_ITEM(p) (AW_ITEMS == 1 ? 0 : (p))
+
 /* ------------------------------------------------------------ precision */
 #ifdef AW_FLOAT
 typedef float real;

@@ -24,7 +24,7 @@
  * the signs are flipped by XOR on the sign bit: integer work only, no
  * floating-point compare, select or negation (bitwise the same results as
  * comparing m = k - 4 rint(k/4) in floating point). */
-#define AW_QUADRANT_SELECT(t, sr, cr, s, c)                                                   \
+#define AW_QUADRANT_SELECT_BITS(t, sr, cr, s, c)                                                   \
   do {                                                                                        \
     lbits aw_q_ = AW_AS_BITS(t);                                                              \
     lbits aw_neg_s_ = (aw_q_ & AW_BITS_C(2)) << AW_BIT1_TO_SIGN;                /* q = 2, 3 */ \
@@ -34,6 +34,24 @@
     *(s) = AW_FROM_BITS(AW_AS_BITS(aw_ss_) ^ aw_neg_s_);                                      \
     *(c) = AW_FROM_BITS(AW_AS_BITS(aw_cc_) ^ aw_neg_c_);                                      \
   } while (0)
+
+/* The same on CUDA in double with -DAW_CUDA_QUADRANT32=1 (an NVRTC option):
+ * q from the low 32-bit word of t and the signs into the high word of the
+ * result, so that the test of q's low bit is one 32-bit instruction instead of
+ * a 64-bit compare (two). The same selections and sign flips: the same bits. */
+#if defined(AW_CUDA) && !defined(AW_FLOAT) && defined(AW_CUDA_QUADRANT32) && AW_CUDA_QUADRANT32
+#define AW_QUADRANT_SELECT(t, sr, cr, s, c)                                                          \
+  do {                                                                                               \
+    const unsigned aw_q_ = (unsigned)__double2loint(t);                                              \
+    const double aw_ss_ = (aw_q_ & 1u) ? (cr) : (sr);                                                \
+    const double aw_cc_ = (aw_q_ & 1u) ? (sr) : (cr);                                                \
+    *(s) = __hiloint2double(__double2hiint(aw_ss_) ^ (int)((aw_q_ & 2u) << 30), __double2loint(aw_ss_)); \
+    *(c) = __hiloint2double(__double2hiint(aw_cc_) ^ (int)(((aw_q_ + 1u) & 2u) << 30),                 \
+                            __double2loint(aw_cc_));                                                 \
+  } while (0)
+#else
+#define AW_QUADRANT_SELECT(t, sr, cr, s, c) AW_QUADRANT_SELECT_BITS(t, sr, cr, s, c)
+#endif
 
 /* The identity: the S() of the kernels below for scalar callers. */
 #define AW_SCALAR_(x) (x)

@@ -150,6 +150,33 @@ TEST_SUITE("nvrtc") {
     CHECK(compiled == 2 * kStepperConfigs + 2 * bits);
   }
 
+  TEST_CASE("the kernel levers compile for sm_90 (bench/gpu/sass_count.py, docs/performance.md round four)") {
+    // Each NVRTC-option lever of the CUDA kernel, alone and together, in the
+    // reference configuration (Figure 3 (a): Yoshida-6, double, map and
+    // energy) and together with the other stepper kinds, float and every effect.
+    const std::vector<std::string> levers = {"-DAW_CUDA_UNROLL_STAGES=1", "-DAW_CUDA_QUADRANT32=1",
+                                             "-DAW_CUDA_UNROLL_STAGES=1 -DAW_CUDA_QUADRANT32=1"};
+    KernelConfig fig3 = config(AW_F_VELOCITY_MAP | AW_F_ENERGY, Precision::Double, MathMode::Portable, true, 7);
+    KernelConfig drift_first = config(AW_F_ALL, Precision::Double, MathMode::Portable, false, 15);
+    KernelConfig in_float = config(AW_F_ALL, Precision::Float, MathMode::Portable, true, 7);
+    KernelConfig gradient = config(AW_F_VELOCITY_MAP, Precision::Double, MathMode::Portable, true, 5);
+    gradient.gradient = true;
+    std::vector<std::pair<KernelConfig, std::string>> cases;
+    for (const std::string& lever : levers) cases.emplace_back(fig3, lever);
+    for (const KernelConfig& k : {drift_first, in_float, gradient}) cases.emplace_back(k, levers.back());
+    for (const auto& [k, lever] : cases) {
+      const std::string defines = k.defines() + " " + lever;
+      CAPTURE(defines);
+      try {
+        const detail::CudaImage img = detail::nvrtc_compile_ensemble(defines, kSm90, "nvrtc test");
+        CHECK(is_elf(img.data));
+        CHECK(contains(img.options, lever));
+      } catch (const BuildError& e) {
+        FAIL_CHECK(e.what());
+      }
+    }
+  }
+
   TEST_CASE("every model's kernel compiles for sm_90 (double and float, every effect, both stepper kinds)") {
     int models = 0;
     for (const detail::ModelDescriptor& m : detail::models()) {

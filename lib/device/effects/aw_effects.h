@@ -56,7 +56,7 @@ AW_FN void aw_fx_begin(aw_config cfg, aw_fx* fx, aw_lstate* s, lreal accepted, a
   aw_tangent_begin(&fx->tangent, rp); /* a few stores; every field defined for the run-time bits of the cpu backend */
   for (int c = 0; c < 3; ++c) fx->asum[c] = AW_LSPLAT(AW_R(0.0));
   if (AW_HAS(AW_F_DIFFUSION)) aw_actions_store(s->px, s->py, s->pz, 0, l, ip, out);
-  if (AW_HAS(AW_F_TRAJECTORIES)) aw_trajectories_store(s, AW_LSPLAT(AW_R(0.0)), 0, l, ip, out);
+  if (AW_HAS(AW_F_TRAJECTORIES)) aw_trajectories_store(s, fx->e0, 0, l, rp, ip, out);
 }
 
 /* The force at the initial state (and, with the indicators, the Hessian). */
@@ -67,13 +67,16 @@ AW_FN void aw_fx_first_force(aw_config cfg, aw_fx* fx, aw_lstate* s, AW_CONSTANT
     aw_force(s, rp);
 }
 
-/* One segment of steps: the plain stepper, or with the indicators the same
- * steps carrying the tangent vector (aw_tangent.h). */
-AW_FN void aw_fx_segment(aw_config cfg, aw_fx* fx, aw_lstate* s, aw_i64 nsteps, AW_CONSTANT aw_rparams* rp) {
-  if (AW_HAS(AW_F_TANGENT))
-    aw_segment_tangent(cfg, s, &fx->tangent, nsteps, rp);
-  else
-    aw_segment(s, nsteps, rp, cfg.stages, cfg.kick_first, cfg.gradient);
+/* One segment of steps of the `items` states s[0..items) (effects fx[0..items)):
+ * the plain stepper, interleaved, or with the indicators the same steps
+ * carrying the tangent vector (aw_tangent.h), one state after the other. */
+AW_FN void aw_fx_segment(aw_config cfg, aw_fx* fx, aw_lstate* s, int items, aw_i64 nsteps,
+                         AW_CONSTANT aw_rparams* rp) {
+  if (AW_HAS(AW_F_TANGENT)) {
+    AW_EACH_ITEM(p, items) aw_segment_tangent(cfg, &s[AW_ITEM(p)], &fx[AW_ITEM(p)].tangent, nsteps, rp);
+  } else {
+    aw_segment_items(s, items, nsteps, rp, cfg.stages, cfg.kick_first, cfg.gradient);
+  }
 }
 
 /* The sample counts at the first segment of a launch, seg_first. */
@@ -107,7 +110,7 @@ AW_FN void aw_fx_sample(aw_config cfg, aw_fx* fx, const aw_lstate* s, aw_lanes l
   if (AW_HAS(AW_F_TRAJECTORIES)) {
     aw_count_next(&fx->picks_at, ip->pick_stride);
     if (fx->picks_at.r == 0 && fx->picks_at.q <= ip->pick_samples)
-      aw_trajectories_store(s, aw_energy(s, rp) - fx->e0, fx->picks_at.q, l, ip, out);
+      aw_trajectories_store(s, fx->e0, fx->picks_at.q, l, rp, ip, out);
   }
 }
 

@@ -26,9 +26,9 @@ AW_FN aw_i64 aw_pick_of(AW_CONSTANT aw_iparams* ip, aw_u64 g) {
 }
 
 /* Sample q (0: t = 0) of the lanes that are picked: state s, energy error
- * e - e0. */
-AW_FN void aw_trajectories_store(const aw_lstate* s, lreal de, aw_i64 q, aw_lanes l, AW_CONSTANT aw_iparams* ip,
-                                 aw_outputs out) {
+ * E(s) - e0 (0 at q = 0), the energy evaluated only where a lane is picked. */
+AW_FN void aw_trajectories_store(const aw_lstate* s, lreal e0, aw_i64 q, aw_lanes l, AW_CONSTANT aw_rparams* rp,
+                                 AW_CONSTANT aw_iparams* ip, aw_outputs out) {
   real r[AW_PICK_REALS][AW_LANES];
   aw_i64 w[AW_PICK_INTS][AW_LANES];
   int stored = 0;
@@ -37,6 +37,7 @@ AW_FN void aw_trajectories_store(const aw_lstate* s, lreal de, aw_i64 q, aw_lane
     const aw_i64 k = aw_pick_of(ip, l.first + (aw_u64)j);
     if (k < 0) continue;
     if (!stored) { /* the lanes' values, once per work-item and sample */
+      const lreal de = (q == 0) ? AW_LSPLAT(AW_R(0.0)) : aw_energy(s, rp) - e0;
       AW_STORE_LANES(s->ux, r[0]);
       AW_STORE_LANES(s->uy, r[1]);
       AW_STORE_LANES(s->uz, r[2]);
