@@ -72,11 +72,13 @@ typedef std::int64_t aw_i64;
 #endif
 
 /* AW_UNROLL_STAGES: the stage loops of the stepper (aw_stepper.h) unrolled in
- * full on CUDA (-DAW_CUDA_UNROLL_STAGES=1, an NVRTC option): the same
- * operations in the same order, so the same bits; what it saves is the
- * per-stage re-materialisation of the sincos constants and loads of the
- * coefficients (bench/gpu/sass_count.py). Nothing elsewhere. */
-#if defined(AW_CUDA) && defined(AW_CUDA_UNROLL_STAGES) && AW_CUDA_UNROLL_STAGES
+ * full on CUDA (the default since 2026-11-28; -DAW_CUDA_UNROLL_STAGES=0, an
+ * NVRTC option, keeps the loop): the same operations in the same order, so the
+ * same bits; what it saves is the per-stage re-materialisation of the sincos
+ * constants and loads of the coefficients (bench/gpu/sass_count.py: Figure 3
+ * (a) 953 -> 758 instructions a step; H200 2.37e10 -> 2.70e10 trajectory-steps/s,
+ * docs/performance.md). Nothing elsewhere. */
+#if defined(AW_CUDA) && (!defined(AW_CUDA_UNROLL_STAGES) || AW_CUDA_UNROLL_STAGES)
 #define AW_UNROLL_STAGES _Pragma("unroll")
 #else
 #define AW_UNROLL_STAGES

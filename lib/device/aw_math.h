@@ -35,11 +35,12 @@
     *(c) = AW_FROM_BITS(AW_AS_BITS(aw_cc_) ^ aw_neg_c_);                                      \
   } while (0)
 
-/* The same on CUDA in double with -DAW_CUDA_QUADRANT32=1 (an NVRTC option):
- * q from the low 32-bit word of t and the signs into the high word of the
- * result, so that the test of q's low bit is one 32-bit instruction instead of
- * a 64-bit compare (two). The same selections and sign flips: the same bits. */
-#if defined(AW_CUDA) && !defined(AW_FLOAT) && defined(AW_CUDA_QUADRANT32) && AW_CUDA_QUADRANT32
+/* The same on CUDA in double (the default since 2026-11-28; -DAW_CUDA_QUADRANT32=0,
+ * an NVRTC option, keeps the form above): q from the low 32-bit word of t and
+ * the signs into the high word of the result, so that the test of q's low bit
+ * is one 32-bit instruction instead of a 64-bit compare (two). The same
+ * selections and sign flips: the same bits. */
+#if defined(AW_CUDA) && !defined(AW_FLOAT) && (!defined(AW_CUDA_QUADRANT32) || AW_CUDA_QUADRANT32)
 #define AW_QUADRANT_SELECT(t, sr, cr, s, c)                                                          \
   do {                                                                                               \
     const unsigned aw_q_ = (unsigned)__double2loint(t);                                              \

@@ -154,8 +154,10 @@ TEST_SUITE("nvrtc") {
     // Each NVRTC-option lever of the CUDA kernel, alone and together, in the
     // reference configuration (Figure 3 (a): Yoshida-6, double, map and
     // energy) and together with the other stepper kinds, float and every effect.
-    const std::vector<std::string> levers = {"-DAW_CUDA_UNROLL_STAGES=1", "-DAW_CUDA_QUADRANT32=1",
-                                             "-DAW_CUDA_UNROLL_STAGES=1 -DAW_CUDA_QUADRANT32=1"};
+    // Unrolled stages and the 32-bit quadrant are the default; =0 keeps the old forms.
+    const std::vector<std::string> levers = {"-DAW_CUDA_UNROLL_STAGES=0", "-DAW_CUDA_QUADRANT32=0",
+                                             "-DAW_CUDA_UNROLL_STAGES=0 -DAW_CUDA_QUADRANT32=0",
+                                             "-DAW_CUDA_PAIR=1 -DAW_CUDA_MIN_BLOCKS=2"};
     KernelConfig fig3 = config(AW_F_VELOCITY_MAP | AW_F_ENERGY, Precision::Double, MathMode::Portable, true, 7);
     KernelConfig drift_first = config(AW_F_ALL, Precision::Double, MathMode::Portable, false, 15);
     KernelConfig in_float = config(AW_F_ALL, Precision::Float, MathMode::Portable, true, 7);
