@@ -3,9 +3,19 @@
 
 namespace arnoldweb::cli {
 
-DeviceOpening::DeviceOpening(const std::string& device)
-    : opened_(std::async(std::launch::async, [device] { return open_backends(device); })) {}
+DeviceOpening::DeviceOpening(const std::string& device) {
+  std::packaged_task<std::vector<std::unique_ptr<Backend>>()> task([device] { return open_backends(device); });
+  opened_ = task.get_future();
+  thread_ = std::thread(std::move(task));
+}
 
-std::vector<std::unique_ptr<Backend>> DeviceOpening::take() { return opened_.get(); }
+std::vector<std::unique_ptr<Backend>> DeviceOpening::take() {
+  if (thread_.joinable()) thread_.join();
+  return opened_.get();
+}
+
+DeviceOpening::~DeviceOpening() {
+  if (thread_.joinable()) thread_.join();
+}
 
 }  // namespace arnoldweb::cli

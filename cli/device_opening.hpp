@@ -10,6 +10,7 @@
 #include <future>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "arnoldweb/device.hpp"
@@ -20,11 +21,18 @@ class DeviceOpening {
  public:
   // Starts open_backends(device) in a thread of its own.
   explicit DeviceOpening(const std::string& device);
-  // The devices, or what opening them threw. Once.
+  // The devices, or what opening them threw, once the thread has ended. Once.
   std::vector<std::unique_ptr<Backend>> take();
+  // Waits for the thread if take() did not.
+  ~DeviceOpening();
+  DeviceOpening(const DeviceOpening&) = delete;
+  DeviceOpening& operator=(const DeviceOpening&) = delete;
 
  private:
-  std::future<std::vector<std::unique_ptr<Backend>>> opened_;  // its destructor waits for the thread
+  // A thread joined before the result is taken (an async's future, once read, no longer
+  // waits for its thread): no thread of the opening outlives take() or the destructor.
+  std::future<std::vector<std::unique_ptr<Backend>>> opened_;
+  std::thread thread_;
 };
 
 }  // namespace arnoldweb::cli
