@@ -41,7 +41,8 @@ symbolizer=/usr/lib/llvm-14/bin/llvm-symbolizer
 # own (the devices are opened in a thread while the run is planned); ASan's teardown of that thread
 # then unmaps what it takes for its own alternate stack and stops ("AddressSanitizer: CHECK failed:
 # sanitizer_posix.cpp:61 unable to unmap", clang 14). ASan then installs no alternate stack: only
-# its report of a stack overflow inside a signal handler is lost.
+# its report of a stack overflow inside a signal handler is lost. (With no OpenCL ICD, OCL_ICD_VENDORS
+# pointing nowhere, the same run exits 4 cleanly under the old options: PoCL is what does it.)
 export ASAN_OPTIONS="use_sigaltstack=0:halt_on_error=1:detect_leaks=1:check_initialization_order=1:strict_init_order=1:detect_stack_use_after_return=1:log_path=$reports/asan"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:log_path=$reports/ubsan"
