@@ -502,6 +502,20 @@ def analyse(rows, grid, places_effect=True):
             "lr_power": lr_power, "profile": prof_s, "edge": ib in (0, len(prof) - 1)}
 
 
+def correlated(res, rho):
+    """The intervals and the power law's ratio with the places counted as effective ones.
+
+    Neighbouring places' residuals that correlate at rho > 0 carry the information of about
+    places (1 - rho) / (1 + rho) independent ones (an AR(1) chain along I1 = I2): the
+    log-likelihood's curvature, hence every -2 ln L difference, shrinks by that fraction."""
+    f = (1 - rho) / (1 + rho) if rho == rho and rho > 0 else 1.0
+    prof = [(a, ll, p) for a, ll, p in res["profile"]]
+    best = max(ll for _, ll, _ in prof)
+    i68, i95 = interval(prof, best, 1.0 / f), interval(prof, best, 3.84 / f)
+    return {"fraction": f, "places": res["places"] * f, "i68": i68, "i95": i95,
+            "sigma_a": (i68[1] - i68[0]) / 2, "lr_power": res["lr_power"] * f}
+
+
 def neighbour_correlation(rows, res):
     """Correlation of the residuals of neighbouring places (resolved points), over every eps."""
     par, eps = res["par"], res["eps"]
@@ -572,13 +586,20 @@ def cmd_fit(o, dirs):
     if res["edge"]:
         print("the best a lies at the grid's edge: the interval is open there")
     pw = res["power"]
+    rho = neighbour_correlation(rows, res)
+    res["correlated"] = adj = correlated(res, rho)
     verdict = "excluded (95 %)" if res["lr_power"] > 3.84 else "not excluded"
     print(f"power law ln D = ln D0 + n ln eps: n = {pw['b1']:.3f}, tau = {pw['tau']:.3f}; "
-          f"-2 ln(L_power / L_law) = {res['lr_power']:.2f}: the power law is {verdict}")
-    rho = neighbour_correlation(rows, res)
+          f"-2 ln(L_power / L_law) = {res['lr_power']:.2f}: with the places independent the power law is {verdict}")
     if rho == rho:
-        eff = res["places"] * (1 - rho) / (1 + rho) if rho > 0 else res["places"]
-        print(f"neighbouring places' residuals: correlation {rho:.3f} (effective places ~{eff:.0f})")
+        print(f"neighbouring places' residuals: correlation {rho:.3f} (effective places ~{adj['places']:.0f})")
+    verdict = "excluded (95 %)" if adj["lr_power"] > 3.84 else "not excluded"
+    print(f"with the correlation (the places counted as ~{adj['places']:.0f}): a 68 %: "
+          f"{adj['i68'][0]:.3f}-{adj['i68'][1]:.3f}, sigma(a) = {adj['sigma_a']:.3f}; 95 %: "
+          f"{adj['i95'][0]:.3f}-{adj['i95'][1]:.3f}; -2 ln(L_power / L_law) = {adj['lr_power']:.2f}: "
+          f"the power law is {verdict}")
+    if adj["i68"][0] <= res["profile"][0][0]:
+        print("  (that 68 % interval reaches the grid's smallest a: it is open there, and sigma(a) a lower bound)")
     print("\n| a | -2 ln L above the best |")
     print("|---|---|")
     best = max(ll for _, ll, _ in res["profile"])

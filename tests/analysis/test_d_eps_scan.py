@@ -159,7 +159,23 @@ class Law(unittest.TestCase):
         text = out.getvalue()
         self.assertEqual(sum(1 for line in text.splitlines() if line.startswith("| 0.") and " | 24 | " in line), 12)
         self.assertIn(f"a = {res['a']:.3f}", text)
-        self.assertIn("the power law is excluded" if res["lr_power"] > 3.84 else "not excluded", text)
+        self.assertIn("independent the power law is excluded" if res["lr_power"] > 3.84 else "not excluded", text)
+        adj = res["correlated"]
+        line = next(x for x in text.splitlines() if x.startswith("with the correlation"))
+        self.assertIn(f"the places counted as ~{adj['places']:.0f}", line)
+        self.assertIn("the power law is excluded" if adj["lr_power"] > 3.84 else "the power law is not excluded", line)
+
+    def test_correlated_places_widen_the_interval(self):
+        res = ds.analyse(ds.load_results(synthetic(self, {"a": 0.25, "places": 32, "seed": 3})), self.GRID)
+        same = ds.correlated(res, float("nan"))
+        self.assertEqual((same["i68"], same["lr_power"]), (res["i68"], res["lr_power"]))
+        adj = ds.correlated(res, 0.437)  # what the ten-eps scan measured: ~50 of 128 places
+        f = (1 - 0.437) / (1 + 0.437)
+        self.assertAlmostEqual(adj["lr_power"], res["lr_power"] * f)
+        self.assertLessEqual(adj["i68"][0], res["i68"][0])
+        self.assertGreaterEqual(adj["i68"][1], res["i68"][1])
+        self.assertGreater(adj["sigma_a"], res["sigma_a"])
+        self.assertAlmostEqual(adj["places"], 32 * f)
 
     def test_step_check(self):
         main, step = temp_dir(self), temp_dir(self)
