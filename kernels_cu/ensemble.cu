@@ -20,17 +20,6 @@
 #define AW_FREQ_WINDOW_TABLE 1024
 __shared__ real aw_freq_window_table[AW_FREQ_WINDOW_TABLE];
 #endif
-/* Two neighbouring trajectories per thread, a stage of each in turn
- * (-DAW_CUDA_PAIR=1, an NVRTC option; aw_ensemble.h): the backend launches a
- * thread per trajectory as always and the upper half of them finds nothing to
- * do. The same bits per trajectory; the work-group's energy sums add in
- * another order. Not with frequencies: their samples are written for every
- * lane, active or not (aw_fx_frequencies.h), and a pair's second trajectory
- * may lie past the chunk's last block. */
-#if defined(AW_CUDA_PAIR) && AW_CUDA_PAIR && !(AW_FEATURES & AW_F_FREQUENCIES)
-#undef AW_ITEMS /* aw_dialect.h's default, 1; read where the core below is compiled */
-#define AW_ITEMS 2
-#endif
 #include "aw_ensemble.h"
 #include "aw_reduce.h"
 
@@ -57,7 +46,7 @@ extern "C" __global__ void __launch_bounds__(AW_CUDA_MAX_BLOCK, AW_CUDA_MIN_BLOC
   extern __shared__ unsigned char aw_shared[];
   real* scratch = (real*)aw_shared;
   const aw_config cfg = {AW_FEATURES, AW_STAGES, AW_KICK_FIRST, AW_INITIAL, AW_GRADIENT};
-  aw_lanes l = {chunk_first + AW_ITEMS * ((aw_u64)blockIdx.x * blockDim.x + threadIdx.x), chunk_end, chunk_first};
+  aw_lanes l = {chunk_first + ((aw_u64)blockIdx.x * blockDim.x + threadIdx.x), chunk_end, chunk_first};
   real emax = 0, esum = 0;
 #if AW_FEATURES & AW_F_FREQUENCIES
   aw_freq_window_fill(ip, (int)threadIdx.x, (int)blockDim.x);

@@ -12,7 +12,7 @@ backward branches): the smallest loop that holds the wrap's three roundings
 inside it with force evaluations (x - 1.5 2^52: three a force) is the stage
 loop, counted (stages - 1) times a step (kick-first; stages for drift-first);
 with the stages unrolled there is none. The wrap's roundings give the
-trajectory-steps of an iteration (two where two trajectories share a thread);
+trajectory-steps of an iteration (one: a thread takes one trajectory);
 the subtractions, 3 stages + 3 a step of the paper's model, check it. Written
 for the paper's model (seibert2011) and its kinetic energy.
 
@@ -22,7 +22,7 @@ for the paper's model (seibert2011) and its kinetic energy.
   --scene    a scene (default scenes/fig3_e15.toml: Figure 3 panel (a));
              its [[panel]] sections are left out
   --defines  the kernel's -D options instead of the scene's
-  --options  extra NVRTC options, e.g. --options="-DAW_CUDA_PAIR=1" (with =)
+  --options  extra NVRTC options, e.g. --options="-DAW_CUDA_UNROLL_STAGES=0" (with =)
   --variants a Markdown table, a row per variant (the format of
              bench/gpu/rates.sh's AW_RATES_VARIANTS: name=options, ';' between)
   --sass     also write the disassembly here

@@ -83,22 +83,6 @@ typedef std::int64_t aw_i64;
 #else
 #define AW_UNROLL_STAGES
 #endif
-/* AW_ITEMS: trajectories (of AW_LANES lanes each) per work-item, taken a
- * stage at a time in turn (aw_stepper.h's aw_segment_items): 1, or 2 on CUDA
- * with -DAW_CUDA_PAIR=1 (kernels_cu/ensemble.cu). AW_EACH_ITEM(p, n) is
- * for (p = 0; p < n; ++p) over them, unrolled on CUDA so that their operations
- * interleave; their states are s[AW_ITEM(p)], a literal 0 where there is one
- * (an array indexed by a loop's variable stays in memory until the loop is
- * unrolled: the cpu backend's kernels were 2 % slower so). */
-#ifndef AW_ITEMS
-#define AW_ITEMS 1
-#endif
-#if defined(AW_CUDA)
-#define AW_EACH_ITEM(p, n) _Pragma("unroll") for (int p = 0; p < (n); ++p)
-#else
-#define AW_EACH_ITEM(p, n) for (int p = 0; p < (n); ++p)
-#endif
-#define AW_ITEM(p) (AW_ITEMS == 1 ? 0 : (p))
 
 /* ------------------------------------------------------------ precision */
 #ifdef AW_FLOAT

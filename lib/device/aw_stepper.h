@@ -102,56 +102,39 @@ AW_FN void aw_segment_gradient(aw_lstate* s, aw_i64 nsteps, AW_CONSTANT aw_rpara
   }
 }
 
-/* Advance the `items` states s[0..items) (items <= AW_ITEMS, aw_dialect.h) by
- * nsteps steps each. On entry and on exit, (u, p) are synchronised and f is
- * the force at u. Several states (a work-item's trajectories) take each stage
- * in turn, so that a GPU thread has independent chains of operations to
- * interleave; each state sees the same operations in the same order as alone. */
-AW_FN void aw_segment_items(aw_lstate* s, int items, aw_i64 nsteps, AW_CONSTANT aw_rparams* rp, int stages,
-                            int kick_first, int gradient) {
+/* Advance by nsteps steps. On entry and on exit, (u, p) are synchronised and
+ * f is the force at u. */
+AW_FN void aw_segment(aw_lstate* s, aw_i64 nsteps, AW_CONSTANT aw_rparams* rp, int stages, int kick_first,
+                      int gradient) {
   if (gradient) {
-    AW_EACH_ITEM(p, items) aw_segment_gradient(&s[AW_ITEM(p)], nsteps, rp, stages);
+    aw_segment_gradient(s, nsteps, rp, stages);
   } else if (kick_first) {
-    AW_EACH_ITEM(p, items) aw_kick(&s[AW_ITEM(p)], rp->kick[0]);
+    aw_kick(s, rp->kick[0]);
     for (aw_i64 n = 0; n < nsteps; ++n) {
       AW_UNROLL_STAGES
       for (int i = 0; i < stages - 1; ++i) {
-        AW_EACH_ITEM(p, items) {
-          aw_model_drift(&s[AW_ITEM(p)], rp->drift[i], rp);
-          aw_force(&s[AW_ITEM(p)], rp);
-          aw_kick(&s[AW_ITEM(p)], rp->kick[i + 1]);
-        }
+        aw_model_drift(s, rp->drift[i], rp);
+        aw_force(s, rp);
+        aw_kick(s, rp->kick[i + 1]);
       }
-      AW_EACH_ITEM(p, items) {
-        aw_model_drift(&s[AW_ITEM(p)], rp->drift[stages - 1], rp);
-        aw_wrap(&s[AW_ITEM(p)]);
-        aw_force(&s[AW_ITEM(p)], rp);
-        aw_kick(&s[AW_ITEM(p)], (n + 1 < nsteps) ? rp->kick_merged : rp->kick[stages]);
-      }
+      aw_model_drift(s, rp->drift[stages - 1], rp);
+      aw_wrap(s);
+      aw_force(s, rp);
+      aw_kick(s, (n + 1 < nsteps) ? rp->kick_merged : rp->kick[stages]);
     }
   } else {
     for (aw_i64 n = 0; n < nsteps; ++n) {
       AW_UNROLL_STAGES
       for (int i = 0; i < stages; ++i) {
-        AW_EACH_ITEM(p, items) {
-          aw_model_drift(&s[AW_ITEM(p)], rp->drift[i], rp);
-          aw_force(&s[AW_ITEM(p)], rp);
-          aw_kick(&s[AW_ITEM(p)], rp->kick[i + 1]);
-        }
+        aw_model_drift(s, rp->drift[i], rp);
+        aw_force(s, rp);
+        aw_kick(s, rp->kick[i + 1]);
       }
-      AW_EACH_ITEM(p, items) {
-        aw_model_drift(&s[AW_ITEM(p)], rp->drift[stages], rp);
-        aw_wrap(&s[AW_ITEM(p)]);
-      }
+      aw_model_drift(s, rp->drift[stages], rp);
+      aw_wrap(s);
     }
-    AW_EACH_ITEM(p, items) aw_force(&s[AW_ITEM(p)], rp);
+    aw_force(s, rp);
   }
-}
-
-/* One state. */
-AW_FN void aw_segment(aw_lstate* s, aw_i64 nsteps, AW_CONSTANT aw_rparams* rp, int stages, int kick_first,
-                      int gradient) {
-  aw_segment_items(s, 1, nsteps, rp, stages, kick_first, gradient);
 }
 
 #endif /* AW_STEPPER_H */

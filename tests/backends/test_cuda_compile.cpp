@@ -154,10 +154,10 @@ TEST_SUITE("nvrtc") {
     // Each NVRTC-option lever of the CUDA kernel, alone and together, in the
     // reference configuration (Figure 3 (a): Yoshida-6, double, map and
     // energy) and together with the other stepper kinds, float and every effect.
-    // Unrolled stages and the 32-bit quadrant are the default; =0 keeps the old forms.
+    // Unrolled stages and the 32-bit quadrant are the default; =0 keeps the old forms
+    // (the last lever, both old forms, is the one compiled with the other configurations).
     const std::vector<std::string> levers = {"-DAW_CUDA_UNROLL_STAGES=0", "-DAW_CUDA_QUADRANT32=0",
-                                             "-DAW_CUDA_UNROLL_STAGES=0 -DAW_CUDA_QUADRANT32=0",
-                                             "-DAW_CUDA_PAIR=1 -DAW_CUDA_MIN_BLOCKS=2"};
+                                             "-DAW_CUDA_UNROLL_STAGES=0 -DAW_CUDA_QUADRANT32=0"};
     KernelConfig fig3 = config(AW_F_VELOCITY_MAP | AW_F_ENERGY, Precision::Double, MathMode::Portable, true, 7);
     KernelConfig drift_first = config(AW_F_ALL, Precision::Double, MathMode::Portable, false, 15);
     KernelConfig in_float = config(AW_F_ALL, Precision::Float, MathMode::Portable, true, 7);

@@ -67,16 +67,13 @@ AW_FN void aw_fx_first_force(aw_config cfg, aw_fx* fx, aw_lstate* s, AW_CONSTANT
     aw_force(s, rp);
 }
 
-/* One segment of steps of the `items` states s[0..items) (effects fx[0..items)):
- * the plain stepper, interleaved, or with the indicators the same steps
- * carrying the tangent vector (aw_tangent.h), one state after the other. */
-AW_FN void aw_fx_segment(aw_config cfg, aw_fx* fx, aw_lstate* s, int items, aw_i64 nsteps,
-                         AW_CONSTANT aw_rparams* rp) {
-  if (AW_HAS(AW_F_TANGENT)) {
-    AW_EACH_ITEM(p, items) aw_segment_tangent(cfg, &s[AW_ITEM(p)], &fx[AW_ITEM(p)].tangent, nsteps, rp);
-  } else {
-    aw_segment_items(s, items, nsteps, rp, cfg.stages, cfg.kick_first, cfg.gradient);
-  }
+/* One segment of steps: the plain stepper, or with the indicators the same
+ * steps carrying the tangent vector (aw_tangent.h). */
+AW_FN void aw_fx_segment(aw_config cfg, aw_fx* fx, aw_lstate* s, aw_i64 nsteps, AW_CONSTANT aw_rparams* rp) {
+  if (AW_HAS(AW_F_TANGENT))
+    aw_segment_tangent(cfg, s, &fx->tangent, nsteps, rp);
+  else
+    aw_segment(s, nsteps, rp, cfg.stages, cfg.kick_first, cfg.gradient);
 }
 
 /* The sample counts at the first segment of a launch, seg_first. */
