@@ -136,15 +136,14 @@ std::vector<Variant> variants() {
   // chaos indicators (docs/indicators.md): the tangent step with merged kicks,
   // and drift-first with MEGNO's extra Hessian, on a grid of directions
   v.push_back({"indicators", [](Scene& s) {
-                 s.fli = s.lyapunov = true;
-                 s.switches.insert("observe.megno");
+                 s.switches = {"observe.fli", "observe.lyapunov", "observe.megno"};
                }});
   v.push_back({"indicators on a grid, drift-first", [](Scene& s) {
                  s.method = "pefrl";
                  s.initial = "grid";
                  s.grid_kind = "lonlat";
                  s.grid_resolution = {7, 3};
-                 s.fli = true;
+                 s.switches.insert("observe.fli");
                  s.switches.insert("observe.megno");
                }});
   // frequency analysis (the sampling, the analysis kernel) and the actions' samples

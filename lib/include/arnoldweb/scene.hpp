@@ -124,11 +124,9 @@ struct Scene {
   // observe.frames: one map per span [t_k, t_k+1) of window start times, in T
   std::vector<double> frame_times;
 
-  // Chaos indicators (docs/indicators.md): observe.fli, .lyapunov,
-  // the initial tangent vector (dX in radians, dP; normalised when planned),
-  // and grids of initial conditions (ensemble.initial = "grid").
-  bool fli = false;
-  bool lyapunov = false;
+  // Chaos indicators (docs/indicators.md; their switches are the indicators
+  // row's, in Scene::switches): the initial tangent vector (dX in radians, dP;
+  // normalised when planned), and grids of initial conditions (ensemble.initial = "grid").
   std::vector<double> tangent_initial = {0.3, -0.7, 0.5, 0.2, 0.6, -0.1};
   std::string grid_kind = "healpix";                // ensemble.grid.kind: healpix, lonlat, plane
   int grid_nside = 16;                              // ensemble.grid.nside (healpix)

@@ -85,7 +85,6 @@ Scene pilot_scene(const Scene& s, const std::string& method, double step, std::u
   p.zoom = false;
   p.confine = false;
   p.frame_times.clear();
-  p.fli = p.lyapunov = false;
   p.switches.clear();  // the output table's switches and table keys: every output off
   p.output_values.clear();
   p.frequencies = false;

@@ -147,7 +147,12 @@ const std::vector<RecordOutput>& record_outputs() {
          AW_F_LYAPUNOV}},
        "the chaos indicators of every trajectory (FLI, MEGNO, Lyapunov exponents; docs/indicators.md)",
        {"duration", "tangent_initial"},
-       {{"observe.megno", AW_F_MEGNO, AW_F_TANGENT,
+       {{"observe.fli", AW_F_FLI, AW_F_TANGENT,
+         "Fast Lyapunov indicator of every trajectory: max over the run of the log of the norm of the tangent vector w "
+         "(norm 1 at the start)."},
+        {"observe.lyapunov", AW_F_LYAPUNOV, AW_F_TANGENT,
+         "Finite-time maximal Lyapunov exponent, log(norm of w(t)) / t, of every trajectory, in 1/T."},
+        {"observe.megno", AW_F_MEGNO, AW_F_TANGENT,
          "Mean MEGNO <Y> of every trajectory (2 on regular orbits, growing as lambda t / 2 on chaotic ones) and the "
          "Lyapunov exponent from its slope."}},
        {},

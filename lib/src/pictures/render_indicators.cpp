@@ -196,7 +196,8 @@ void write_grid_picture(const Plan& plan, const Result& r, const std::string& pa
 
 bool draw_map_and_fli(const Plan& plan, const Result& r, const Records& ind, const std::string& path) {
   const Scene& s = plan.scene;
-  if (!s.fli || ind.reals.empty() || s.grid_kind != "healpix" || r.map.empty() || r.nside <= 0) return false;
+  if (!s.observes("observe.fli") || ind.reals.empty() || s.grid_kind != "healpix" || r.map.empty() || r.nside <= 0)
+    return false;
   render_map_and_fli(path, r.map, r.nside, column(ind, AW_IND_FLI), s.grid_nside, picture_title(plan),
                      picture_caption(r));
   return true;

@@ -38,9 +38,7 @@ const std::vector<EffectRow>& effects() {
       {"frames", AW_F_FRAMES, [](const Scene& s) { return !s.frame_times.empty(); }},
       {"time_reversal", AW_F_REVERSE, nullptr},
       // the output table's switches and table keys ask for their own bits as well (features_of)
-      {"tangent", AW_F_TANGENT, [](const Scene& s) { return s.fli || s.lyapunov; }},
-      {"fli", AW_F_FLI, [](const Scene& s) { return s.fli; }},
-      {"lyapunov", AW_F_LYAPUNOV, [](const Scene& s) { return s.lyapunov; }},
+      {"tangent", AW_F_TANGENT, nullptr},  // the indicators' switches need it
       {"frequencies", AW_F_FREQUENCIES, [](const Scene& s) { return s.frequencies; }},
       {"diffusion", AW_F_DIFFUSION, [](const Scene& s) { return s.diffusion; }},
   }, {

@@ -51,9 +51,9 @@ int initial_kind(const Scene& scene) {
                                        : AW_INITIAL_SHELL;
 }
 
-// The keys that ask for the tangent dynamics: observe.fli, observe.lyapunov and the output table's switches that need it.
+// The keys that ask for the tangent dynamics: the output table's switches that need it.
 std::string tangent_keys() {
-  std::vector<std::string> keys = {"observe.fli", "observe.lyapunov"};
+  std::vector<std::string> keys;
   for (const detail::OutputSwitch* w : detail::output_switches())
     if (w->needs & AW_F_TANGENT) keys.push_back(w->key);
   std::string s;

@@ -775,7 +775,7 @@ void output_keys(Rows& add) {
       "as a HEALPix FITS binary table (RING, NSIDE) for healpy.read_map and other FITS tools (docs/outputs.md).");
 }
 
-// Chaos indicators and grids of initial conditions (docs/indicators.md).
+// Grids of initial conditions (docs/indicators.md).
 void indicator_keys(Rows& add) {
   const auto whole = [](double v) { return v >= 1 && v <= 65536 && v == static_cast<double>(static_cast<long>(v)); };
   add("ensemble.grid", "table", "{ kind, nside, resolution, range1, range2, axes, fixed, position }",
@@ -828,17 +828,6 @@ void indicator_keys(Rows& add) {
         r.reals(key, n, s.grid_position, 3, [](const std::vector<double>&) { return true; });
       },
       "The position X (angles, radians) of every grid point.");
-  add("observe.fli", "boolean", "true or false", "true or false", bool_of(&Scene::fli), bool_into(&Scene::fli),
-      "Fast Lyapunov indicator of every trajectory: max over the run of the log of the norm of the tangent vector w (norm 1 at the start).");
-  add("observe.lyapunov", "boolean", "true or false", "true or false", bool_of(&Scene::lyapunov),
-      bool_into(&Scene::lyapunov), "Finite-time maximal Lyapunov exponent, log(norm of w(t)) / t, of every trajectory, in 1/T.");
-  add("observe.tangent_initial", "array of 6 floats", kDirectionRange, std::string("an array of 6 floats, ") + kDirectionRange,
-      [](const Scene& s) { return list(s.tangent_initial); },
-      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
-        read_direction(r, key, n, 6, s.tangent_initial);
-      },
-      "Initial tangent vector (dX in radians, dP) of the indicators, normalised to 1. The default has no symmetry "
-      "between coordinates (a symmetric one stays in symmetric planes and hides resonances such as I1 = I2).");
 }
 
 // The switches of the output table's rows (lib/src/output_table/), kept in Scene::switches.
@@ -856,6 +845,17 @@ void output_switch_keys(Rows& add) {
         },
         w->meaning);
   }
+}
+
+// The indicators' initial tangent vector (their switches are the output table's, before it).
+void tangent_key(Rows& add) {
+  add("observe.tangent_initial", "array of 6 floats", kDirectionRange, std::string("an array of 6 floats, ") + kDirectionRange,
+      [](const Scene& s) { return list(s.tangent_initial); },
+      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+        read_direction(r, key, n, 6, s.tangent_initial);
+      },
+      "Initial tangent vector (dX in radians, dP) of the indicators, normalised to 1. The default has no symmetry "
+      "between coordinates (a symmetric one stays in symmetric planes and hides resonances such as I1 = I2).");
 }
 
 // [[panel]] tables are read as a whole (panels.cpp); these rows document them.
@@ -879,6 +879,7 @@ std::vector<KeySpec> build() {
   observe_keys(rows);
   indicator_keys(rows);
   output_switch_keys(rows);
+  tangent_key(rows);
   analysis_keys(rows);
   output_table_keys(rows);
   output_keys(rows);
