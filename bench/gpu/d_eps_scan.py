@@ -509,10 +509,10 @@ def correlated(res, rho):
     places (1 - rho) / (1 + rho) independent ones (an AR(1) chain along I1 = I2): the
     log-likelihood's curvature, hence every -2 ln L difference, shrinks by that fraction."""
     f = (1 - rho) / (1 + rho) if rho == rho and rho > 0 else 1.0
-    prof = [(a, ll, p) for a, ll, p in res["profile"]]
+    prof = res["profile"]
     best = max(ll for _, ll, _ in prof)
     i68, i95 = interval(prof, best, 1.0 / f), interval(prof, best, 3.84 / f)
-    return {"fraction": f, "places": res["places"] * f, "i68": i68, "i95": i95,
+    return {"places": res["places"] * f, "i68": i68, "i95": i95,
             "sigma_a": (i68[1] - i68[0]) / 2, "lr_power": res["lr_power"] * f}
 
 
