@@ -156,6 +156,19 @@ TEST_SUITE("states") {
                                "HDF5 1.10.8 loops for ever (a damaged file)"));
   }
 
+  TEST_CASE("1. a local heap whose free list returns to a block, on which HDF5 1.10.8 takes memory for ever, is refused") {
+    // the saved-run fuzzer's reproducer (a mutated map.h5: the heap's only free block names itself
+    // as the next); HDF5 took 2 GB in 6 s at the first lookup of a name before
+    const std::string dir = awtest::temp_dir("states-local-heap");
+    const std::string path = dir + "/heap.h5";
+    fs::copy_file(std::string(ARNOLDWEB_SOURCE_DIR) + "/tests/fuzz/hdf5-defects/local-heap-free-list-cycle", path);
+    std::string out;
+    CHECK(check_within(dir, path, 60, &out) == 2);
+    CAPTURE(out);
+    CHECK(contains(out, path + ": holds a local heap at byte 680 whose free list returns to its block at offset 16: "
+                               "HDF5 1.10.8 would take memory for ever reading it (a damaged file)"));
+  }
+
   TEST_CASE("2. every dataset's row count is compared with the others, before anything is read") {
     const std::string dir = awtest::temp_dir("states-rows");
     const States s = simple_states(4), twice = simple_states(8);

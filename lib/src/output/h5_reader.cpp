@@ -224,7 +224,7 @@ void H5File::open(const std::string& name, hid_t fapl) {
 }
 
 void H5File::guard_heaps(const ReadAt& read) const {
-  if (const std::string why = global_heap_problem(read, file_bytes_); !why.empty()) fail("", why);
+  if (const std::string why = heap_problem(read, file_bytes_); !why.empty()) fail("", why);
 }
 
 void H5File::fail(const std::string& object, const std::string& message) const {

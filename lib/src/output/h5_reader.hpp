@@ -11,8 +11,8 @@
 //    virtual datasets are refused (they name other files, which may be FIFOs
 //    or devices: a read would block for ever), and so are filters beyond
 //    deflate, shuffle and fletcher32 (others load plugins). Before HDF5
-//    opens the file, its global heaps are walked as HDF5 1.10.8 walks them
-//    (a damaged one made HDF5 loop for ever: h5_global_heaps.hpp). A file handed to
+//    opens the file, its heaps (global and local) are walked as HDF5 1.10.8 walks them
+//    (a damaged one made HDF5 loop or take memory for ever: h5_heaps.hpp). A file handed to
 //    another reader (h5py, which iterates groups) is first walked whole
 //    (check_every_link). arnoldweb's own readers look names up rather than
 //    iterate: HDF5 1.10.8 frees uninitialised entries of its link table when
@@ -37,7 +37,7 @@
 #include <vector>
 
 #include "os/regular_file.hpp"
-#include "output/h5_global_heaps.hpp"
+#include "output/h5_heaps.hpp"
 #include "output/hdf5_handle.hpp"
 
 namespace arnoldweb::detail {
@@ -79,7 +79,7 @@ class H5File {
 
  private:
   void open(const std::string& name, hid_t fapl);
-  // fail for a global heap on which HDF5 would loop for ever (h5_global_heaps.hpp)
+  // fail for a heap on which HDF5 would loop or take memory for ever (h5_heaps.hpp)
   void guard_heaps(const ReadAt& read) const;
   // The path of hard links that `path` names ("/" the root), "" when it
   // names nothing; fail for a link on the way that leads out of the file.
