@@ -9,7 +9,7 @@ The plan, its rules and the commands: bench/gpu/campaigns/README.md ("The D(eps)
     d_eps_scan.py select --eps E --places FILE --fli H5 --out DIR      (h5py) the orbits chosen
     d_eps_scan.py states --eps E --places FILE --chosen FILE [--every-place K] --out H5   (h5py)
     d_eps_scan.py extract --run DIR --places FILE [--every-place K] --out DIR            (h5py)
-    d_eps_scan.py fit [--step MAIN_DIR STEP_DIR T_LO T_HI] RESULT_DIR...   the law, pure Python
+    d_eps_scan.py fit [--step MAIN_DIR STEP_DIR T_LO T_HI] [--svg PATH] RESULT_DIR...   the law, pure Python
     d_eps_scan.py design [--csv 16-PLACE CSV]            the Fisher estimate of sigma(a) of designs
     d_eps_scan.py synthetic --a A --out DIR [...]        data of a known law (the test's)
 
@@ -30,7 +30,7 @@ import random
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from d_eps_fit import fit_line  # noqa: E402
+from d_eps_fit import fit_line, svg_axes  # noqa: E402
 
 E_FGL = 0.5                     # model.energy of the scenes
 V_AT_ZERO = 1.0 / 7.0           # the fgl potential's 1/(cos + cos + cos + 4) at angles 0
@@ -559,6 +559,63 @@ def step_check(main, step, t_lo, t_hi):
     return len(ratios), m, se
 
 
+def svg(rows, res, path):
+    """log10 D against eps^-a at the best a, each run less its place's offset u (so that the law is a
+    line): resolved runs as dots, runs whose growth is not linear as bars between their halves, unresolved
+    ones as triangles at their upper limit; the law's line and the power law's curve (both fitted)."""
+    a, par, pw = res["a"], res["par"], res["power"]
+    W, H, m = 640, 420, 64
+    eps = res["eps"]
+    X0, X1 = min(e ** -a for e in eps), max(e ** -a for e in eps)
+    marks = []
+    for r in rows:
+        kind, lo, hi = classify(r)
+        u = par["u"][int(r["place"])]
+        marks.append((r["eps"] ** -a, kind, (lo - u) / math.log(10), (hi - u) / math.log(10)))
+    # the frame holds the resolved runs and the intervals; a place whose runs are all upper limits has
+    # no bounded offset, so its limits may lie far above: they are counted, not drawn
+    ys = [y for _, kind, lo, hi in marks if kind != "upper" for y in (lo, hi)]
+    y0, y1 = math.floor(min(ys)) - 1, math.ceil(max(ys)) + 1
+    above = sum(1 for _, kind, _lo, hi in marks if kind == "upper" and hi > y1)
+    X = lambda x: m + (x - X0) / (X1 - X0) * (W - 2 * m)
+    Y = lambda y: H - m - (y - y0) / (y1 - y0) * (H - 2 * m)
+    out = svg_axes(W, H, m, f"eps^-{a:g} (eps from {max(eps):g} to {min(eps):g}; ticks at the runs' eps)",
+                   "log10 D - place offset (per T)")
+    for e in eps:
+        out.append(f'<text x="{X(e ** -a):.1f}" y="{H - m + 16}" text-anchor="middle" font-size="9">{e:g}</text>')
+    for y in range(y0, y1 + 1, max(1, (y1 - y0) // 8)):
+        out.append(f'<text x="{m - 6}" y="{Y(y) + 4:.1f}" text-anchor="end">{y}</text>')
+    for x, kind, lo, hi in marks:
+        x = X(x)
+        if kind == "point":
+            out.append(f'<circle cx="{x:.1f}" cy="{Y(lo):.1f}" r="1.8" fill="#9ab" fill-opacity="0.6"/>')
+        elif kind == "interval":
+            out.append(f'<line x1="{x + 3:.1f}" y1="{Y(lo):.1f}" x2="{x + 3:.1f}" y2="{Y(hi):.1f}" stroke="#d96" '
+                       'stroke-opacity="0.5"/>')
+        elif hi <= y1:
+            out.append(f'<path d="M{x - 6:.1f},{Y(hi) - 2:.1f} l4,0 l-2,4 Z" fill="none" stroke="#aaa" '
+                       'stroke-opacity="0.6"/>')
+    law = [(x, (par["b0"] + par["b1"] * x) / math.log(10)) for x in (X0, X1)]
+    out.append(f'<line x1="{X(law[0][0]):.1f}" y1="{Y(law[0][1]):.1f}" x2="{X(law[1][0]):.1f}" '
+               f'y2="{Y(law[1][1]):.1f}" stroke="#c33" stroke-width="2"/>')
+    # the power law has its own place offsets: on this picture's scale (less the law's) its curve moves
+    # by their mean difference over the resolved runs
+    pts = [int(r["place"]) for r in rows if classify(r)[0] == "point"]
+    shift = sum(pw["u"][p] - par["u"][p] for p in pts) / len(pts)
+    curve = [X0 + (X1 - X0) * k / 60 for k in range(61)]
+    out.append('<polyline fill="none" stroke="#36c" stroke-width="2" stroke-dasharray="5 4" points="' +
+               " ".join(f"{X(x):.1f},{Y((pw['b0'] + shift + pw['b1'] * math.log(x ** (-1 / a))) / math.log(10)):.1f}"
+                        for x in curve) + '"/>')
+    out.append(f'<text x="{m + 8}" y="{m - 40}" font-size="11">dots: resolved runs; bars: growth not linear; '
+               f'triangles: upper limits ({above} above the frame)</text>')
+    out.append(f'<text x="{m + 8}" y="{m - 24}" fill="#c33">D0 exp(-c / eps^a): a = {a:g}, c = {-par["b1"]:.4g} '
+               f'({res["n"]} runs, {res["places"]} places)</text>')
+    out.append(f'<text x="{m + 8}" y="{m - 8}" fill="#36c">power law D0 eps^n: n = {pw["b1"]:.2f}</text>')
+    out.append("</svg>")
+    with open(path, "w") as f:
+        f.write("\n".join(out) + "\n")
+
+
 def median(v):
     v = sorted(v)
     return (v[(len(v) - 1) // 2] + v[len(v) // 2]) / 2 if v else float("nan")
@@ -605,6 +662,8 @@ def cmd_fit(o, dirs):
     best = max(ll for _, ll, _ in res["profile"])
     for a, ll, _ in res["profile"][::max(1, int(0.05 / grid_step))]:
         print(f"| {a:.2f} | {2 * (best - ll):.2f} |")
+    if o.get("svg"):
+        svg(rows, res, o["svg"])
     if o.get("step"):
         main, step, lo, hi = o["step"]
         n, m, se = step_check(main, step, float(lo), float(hi))

@@ -165,6 +165,26 @@ class Law(unittest.TestCase):
         self.assertIn(f"the places counted as ~{adj['places']:.0f}", line)
         self.assertIn("the power law is excluded" if adj["lr_power"] > 3.84 else "the power law is not excluded", line)
 
+    def test_svg_draws_every_run_and_the_fitted_law(self):
+        import xml.etree.ElementTree as ET
+        dirs = synthetic(self, {"a": 0.25, "places": 16, "seed": 9})
+        rows = ds.load_results(dirs)
+        res = ds.analyse(rows, self.GRID)
+        path = os.path.join(temp_dir(self), "d_eps.svg")
+        ds.svg(rows, res, path)
+        ns = "{http://www.w3.org/2000/svg}"
+        root = ET.parse(path).getroot()  # well-formed
+        kinds = [ds.classify(r)[0] for r in rows]
+        self.assertEqual(len(root.findall(ns + "circle")), kinds.count("point"))
+        legend = " ".join(t.text for t in root.findall(ns + "text"))
+        above = int(legend.split("upper limits (")[1].split(" above")[0])
+        self.assertEqual(len(root.findall(ns + "path")) + above, kinds.count("upper"))
+        self.assertIn(f"a = {res['a']:g}", legend)
+        law = [e for e in root.findall(ns + "line") if e.get("stroke") == "#c33"]
+        self.assertEqual(len(law), 1)
+        # the law's line falls from the largest eps (left) to the smallest (right), as fitted
+        self.assertLess(float(law[0].get("y1")), float(law[0].get("y2")))
+
     def test_correlated_places_widen_the_interval(self):
         res = ds.analyse(ds.load_results(synthetic(self, {"a": 0.25, "places": 32, "seed": 3})), self.GRID)
         same = ds.correlated(res, float("nan"))
