@@ -38,6 +38,10 @@
 # that it is killed and the last periodic checkpoint (run.checkpoint_every) is taken. $OUT then
 # holds at most 8 files, 15 MiB each: job.log, job.tgz (each campaign's ledger entry, run log
 # and, when done, its kept outputs) and checkpoint.awck.gz (split into .00, .01, ... above 15 MiB).
+# While a run goes on, each new periodic checkpoint (looked for every AW_JOB_POLL = 2 s) is also
+# packed with a provisional entry into $OUT/cut/: a job killed without warning (the device tool at
+# its limit kills everything at once) brings that back, and `accept` takes it; a job that ends as
+# planned removes cut/.
 # Environment: AW (the program; default: built here, else build/arnoldweb), AW_DEVICE,
 # AW_CAMPAIGN_WORK (work folders, default /tmp/aw-campaign: the same on every job of a campaign).
 set -uo pipefail
@@ -158,6 +162,35 @@ digests_of() {  # SUMMARY.JSON: the non-empty digests, one "name=value" a line
   python3 -c "import json,sys; d=json.load(open(sys.argv[1]))['digests']; print(' '.join(f'{k}={v}' for k,v in sorted(d.items()) if v and k != 'algorithm'))" "$1"
 }
 
+entry_line() {  # N FROM TO EXIT STATE SECONDS PROGRESS INPUTS NOTE: one ledger entry
+  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$1" "$(date -u +%Y-%m-%dT%H:%M:%SZ)" \
+    "$(machine_name) $DEVICE" "$2" "$3" "$4" "$5" "$6" "$7" "$8" "$9"
+}
+last_progress() { local p; p=$(grep -o 'progress: *[0-9]*%' "$WORK/run.log" | tail -1 | grep -o '[0-9]*%'); echo "${p:--}"; }
+
+# save_cut CHECKPOINT STAGE N FROM INPUTS STARTED: while the run goes on, its newest periodic
+# checkpoint and a provisional ledger entry (with the entries of the campaigns this job finished
+# before it) into $OUT/cut/, replaced whole at each new checkpoint. A job killed without warning
+# (a device call or batch job past its limit: no SIGTERM, everything killed at once) still brings
+# back a checkpoint that `accept` takes; a job that ends as planned removes cut/.
+save_cut() {
+  local ck=$1 stage=$2 n=$3 from=$4 inputs=$5 started=$6 tmp="$OUT/cut.tmp" to note
+  rm -rf "$tmp"; mkdir -p "$tmp"
+  # the checkpoint is renamed into place whole (atomic_file): a copy is one checkpoint
+  cp "$ck" "$tmp/checkpoint.awck" 2>/dev/null || { rm -rf "$tmp"; return 0; }
+  to=$(sha_of <"$tmp/checkpoint.awck")
+  if [ "$to" = "$from" ]; then rm -rf "$tmp"; return 0; fi
+  gzip -n -6 -c "$tmp/checkpoint.awck" >"$tmp/checkpoint.awck.gz"
+  note="cut off: the job was killed without warning; its last periodic checkpoint, $(stat -c %s "$tmp/checkpoint.awck") bytes, $(stat -c %s "$tmp/checkpoint.awck.gz") gzipped"
+  rm -f "$tmp/checkpoint.awck"
+  pack "$tmp/checkpoint.awck.gz"
+  entry_line "$n" "$from" "$to" 137 stopped "$(sec $(( $(us) - started )))" "$(last_progress)" "$inputs" "$note" >"$stage/entry.tsv"
+  cp "$WORK/run.log" "$stage/run.log"
+  tar czf "$tmp/job.tgz" -C "$STAGE" . && pack "$tmp/job.tgz" || { rm -rf "$tmp"; return 0; }
+  rm -rf "$OUT/cut"; mv "$tmp" "$OUT/cut"
+  echo "[$(now) s] $CDIR: periodic checkpoint at $(last_progress) kept in \$OUT/cut (taken if the job is cut off)"
+}
+
 # run_one KEY: one campaign's part of the job. Sets STATE (done, stopped, failed, refused).
 run_one() {
   CDIR=$1
@@ -208,6 +241,9 @@ run_one() {
   mkdir -p "$stage"
   echo "$CDIR" >"$stage/campaign"
   started=$(us)
+  local cut_stamp="" cut_next=0 ck
+  ck=$(ls -t "$WORK"/run.partial-*/checkpoint.awck 2>/dev/null | head -1)
+  [ -n "$ck" ] && cut_stamp=$(stat -c '%i %.9Y' "$ck")  # the adopted one: nothing new
   "$AW" "${cmd[@]}" >"$WORK/run.log" 2>&1 &
   local pid=$! termed="" killed="" going=""
   while kill -0 "$pid" 2>/dev/null; do
@@ -221,11 +257,19 @@ run_one() {
       echo "[$(now) s] $CDIR: still running $(sec "$GRACE") s after SIGTERM: SIGKILL (the last periodic checkpoint stays)"
       kill -KILL "$pid" 2>/dev/null; killed=1
     fi
+    if [ -z "$termed" ] && [ "$(us)" -ge "$cut_next" ]; then
+      cut_next=$(( $(us) + POLL ))
+      ck=$(ls -t "$WORK"/run.partial-*/checkpoint.awck 2>/dev/null | head -1)
+      if [ -n "$ck" ] && [ "$(stat -c '%i %.9Y' "$ck" 2>/dev/null)" != "$cut_stamp" ]; then
+        cut_stamp=$(stat -c '%i %.9Y' "$ck" 2>/dev/null)
+        save_cut "$ck" "$stage" "$n" "$from" "$inputs" "$started"
+      fi
+    fi
     sleep 0.05
   done
   wait "$pid"; rc=$?
   seconds=$(sec $(( $(us) - started )))
-  progress=$(grep -o 'progress: *[0-9]*%' "$WORK/run.log" | tail -1 | grep -o '[0-9]*%'); [ -n "$progress" ] || progress=-
+  progress=$(last_progress)
   tail -4 "$WORK/run.log" | sed "s|^|  $CDIR: |"
 
   to=-
@@ -256,8 +300,7 @@ run_one() {
       note="exit $rc without a new checkpoint (the run's log says why): the state stays that of job $((n - 1))"
     fi
   fi
-  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$n" "$(date -u +%Y-%m-%dT%H:%M:%SZ)" \
-    "$(machine_name) $DEVICE" "$from" "$to" "$rc" "$state" "$seconds" "$progress" "$inputs" "$note" >"$stage/entry.tsv"
+  entry_line "$n" "$from" "$to" "$rc" "$state" "$seconds" "$progress" "$inputs" "$note" >"$stage/entry.tsv"
   cp "$WORK/run.log" "$stage/run.log"
   echo "[$(now) s] $CDIR: job $n: $state (exit $rc, $seconds s, progress $progress) $note"
   STATE=$state
@@ -274,7 +317,7 @@ cmd_job() {
     die "$OUT holds another job's files (job.log, job.tgz, checkpoint.awck.gz): one job a folder"
   exec > >(tee "$OUT/job.log") 2>&1
   local budget=${AW_JOB_SECONDS:-540} reserve=${AW_JOB_RESERVE:-45}
-  GRACE=$(us_of "${AW_JOB_GRACE:-30}")
+  GRACE=$(us_of "${AW_JOB_GRACE:-30}") POLL=$(us_of "${AW_JOB_POLL:-2}")
   TERM_AT=$(us_of "$(awk -v b="$budget" -v r="$reserve" 'BEGIN { print (b > r ? b - r : 0) }')")
   local start_until=$((TERM_AT - (TERM_AT > 60000000 ? 30000000 : 0)))  # a campaign after the first needs 30 s
   echo "campaign job: ${dirs[*]}; SIGTERM at $(sec "$TERM_AT") s of the job (AW_JOB_SECONDS=$budget, AW_JOB_RESERVE=$reserve)"
@@ -292,6 +335,7 @@ cmd_job() {
   if [ "$CAMPAIGNS_TOUCHED" -gt 0 ]; then
     tar czf "$OUT/job.tgz" -C "$STAGE" . && pack "$OUT/job.tgz"
   fi
+  rm -rf "$OUT/cut" "$OUT/cut.tmp"  # the job ended as planned: job.tgz says what it did
   local files; files=$(ls "$OUT" | wc -l)
   [ "$files" -le 8 ] || echo "WARNING: $files files in $OUT: the device tool brings back 8"
   echo "[$(now) s] job over: $(ls "$OUT" | tr '\n' ' ')"
@@ -306,6 +350,10 @@ cmd_accept() {
   STAGE=$(mktemp -d)
   trap 'rm -rf "$STAGE"' EXIT
   local stage=$STAGE
+  if ! ls "$from"/job.tgz* >/dev/null 2>&1 && ls "$from"/cut/job.tgz* >/dev/null 2>&1; then
+    echo "accept: $from holds no job.tgz but cut/: the job was cut off; taking what it kept at its last periodic checkpoint"
+    from=$from/cut
+  fi
   if ! ls "$from"/job.tgz* >/dev/null 2>&1; then echo "accept: no job.tgz in $from: the job touched no campaign (see $from/job.log)"; return 1; fi
   unpack "$from" job.tgz | tar xzf - -C "$stage" || die "$from/job.tgz: damaged"
   local e dir n last entry job efrom eto state newck=""

@@ -9,7 +9,9 @@
 #    a checkpoint whose sha256 is not the ledger's (a byte changed; the ledger's digest changed); a
 #    campaign whose values changed after a stop is refused by arnoldweb itself (another scene) and
 #    recorded as a failed job.
-# 3. The campaign of part 2, continued to its end, gives the digests of the run in one piece.
+# 3. A job killed without warning (SIGKILL to its process group, as the device tool at its limit):
+#    its cut/ is accepted, and the campaign continued gives the digests of the run in one piece.
+# 4. The campaign of part 2, continued to its end, gives the digests of the run in one piece.
 # Jobs have a budget of 0 s: SIGTERM at the run's first progress line, so that each stops after a
 # slice or so, whatever the machine's speed or load. Exit 77 (skipped) without python3 (the runner
 # reads summary.json with it), unless ARNOLDWEB_REQUIRE_CHECKS=1.
@@ -110,7 +112,36 @@ bash $C accept "$T/out-2" || fail "accept of the failed job 2"
 grep -q "another scene" "$T/camp/jobs/002.log" || { cat "$T/camp/jobs/002.log"; fail "job 2: not refused as another scene"; }
 cp "$T/conf.good" "$T/camp/campaign.conf"
 
-# ---- 3. to the end, through the hand-overs above
+# ---- 3. a job killed without warning, as the device tool kills a call at its limit (everything at
+# once, no SIGTERM): what it kept in cut/ at its last periodic checkpoint is accepted and continued
+# to the digests of the same run in one piece
+mkdir -p "$T/camp2"
+printf 'scene = %s\nset = run.duration=2000\nset = run.slice=50\ndevice = cpu\n' "$T/scene.toml" >"$T/camp2/campaign.conf"
+# 2000 T: about 3 s on 2 cores, 6 periodic checkpoints (every 0.5 s)
+"$AW" run "$T/scene.toml" --set run.duration=2000 --set run.slice=50 --device cpu --out "$T/plain2" >"$T/plain2.log" 2>&1 ||
+  { cat "$T/plain2.log"; fail "the 2000 T run in one piece"; }
+plain2=$(python3 -c "import json,sys; d=json.load(open(sys.argv[1]))['digests']; print(' '.join(f'{k}={v}' for k,v in sorted(d.items()) if v and k != 'algorithm'))" "$T/plain2/summary.json")
+OUT=$T/out-cut AW_JOB_SECONDS=600 AW_JOB_POLL=0.1 setsid bash $C job "$T/camp2" >"$T/job-cut.log" 2>&1 &
+jpid=$!
+for _ in $(seq 600); do [ -f "$T/out-cut/cut/job.tgz" ] && break; sleep 0.05; done
+kill -KILL -- -"$jpid" 2>/dev/null; wait "$jpid" 2>/dev/null
+[ -f "$T/out-cut/cut/job.tgz" ] || { cat "$T/job-cut.log"; fail "no cut/ kept while the run went on"; }
+[ ! -e "$T/out-cut/job.tgz" ] || fail "the run ended before the kill: nothing was cut off (a longer run is needed here)"
+bash $C accept "$T/out-cut" >"$T/accept-cut.log" 2>&1 || { cat "$T/accept-cut.log"; fail "accept of the job cut off"; }
+grep -q "the job was cut off" "$T/accept-cut.log" || { cat "$T/accept-cut.log"; fail "accept did not say the job was cut off"; }
+[ "$(tail -1 "$T/camp2/ledger.tsv" | cut -f7)" = stopped ] || fail "the job cut off is not recorded as stopped"
+[ -f "$T/camp2/checkpoint.awck.gz" ] || fail "no checkpoint handed over from the job cut off"
+m=1
+until [ "$(tail -1 "$T/camp2/ledger.tsv" | cut -f7)" = done ] || [ $m -gt 5 ]; do
+  rm -rf "$T/out-c$m"
+  OUT=$T/out-c$m AW_JOB_SECONDS=600 bash $C job "$T/camp2" >"$T/job-c$m.log" 2>&1 || { cat "$T/job-c$m.log"; fail "job c$m"; }
+  [ ! -e "$T/out-c$m/cut" ] || fail "a job that ended as planned left cut/"
+  bash $C accept "$T/out-c$m" >/dev/null || fail "accept of job c$m"
+  m=$((m + 1))
+done
+[ "$(tail -1 "$T/camp2/ledger.tsv" | cut -f11)" = "$plain2" ] || fail "cut off and continued: digests $(tail -1 "$T/camp2/ledger.tsv" | cut -f11), in one piece $plain2"
+
+# ---- 4. to the end, through the hand-overs above
 n=3
 until [ "$(tail -1 "$T/camp/ledger.tsv" | cut -f7)" = done ] || [ $n -gt 30 ]; do
   job $n 600 || { cat "$T/job-$n.log"; fail "job $n"; }
@@ -121,4 +152,4 @@ bash $C status "$T/camp"
 final=$(tail -1 "$T/camp/ledger.tsv" | cut -f11)
 [ "$final" = "$plain" ] || fail "the campaign's digests ($final) are not the run's in one piece ($plain)"
 [ ! -e "$T/camp/checkpoint.awck.gz" ] || fail "the checkpoint was not consumed at the end"
-echo "campaign hand-over: verify through $jobs jobs, refusals, and the refused campaign continued to the run's digests"
+echo "campaign hand-over: verify through $jobs jobs, refusals, a job cut off and continued, and the refused campaign continued to the run's digests"
