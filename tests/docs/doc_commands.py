@@ -89,7 +89,7 @@ RULES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "rules.toml")
 # Programs a command may begin with (after NAME=value assignments).
 PROGRAMS = re.compile(
     r"^(arnoldweb|build/\S+|scripts/\S+\.sh|bench/\S+\.(?:sh|py)|examples/\S+\.py|\.\./shared/\S+|"
-    r"python3?|/usr/bin/python3|pip3?|bash|mpirun|srun|sbatch|ctest|cmake|ninja|ncu|nsys|farm-bench|"
+    r"python3?|/usr/bin/python3|pip3?|bash|mpirun|srun|sbatch|ctest|cmake|ninja|ncu|nsys|"
     r"/usr/bin/time|kill|cp|ls|cd|h5dump|for|if|while)$")
 PYTHON = re.compile(r"^(python3?|/usr/bin/python3|pip3?|\S+\.py)$")
 COMPOUND = re.compile(r"^(for \w+ in .*; do|if .*; then|while .*; do)$")
