@@ -21,7 +21,12 @@
 #ifndef AW_FLOAT
 #pragma OPENCL EXTENSION cl_khr_fp64 : enable
 #endif
+#if defined(AW_OPENCL_ALWAYS_INLINE)
+/* CPU devices (PoCL): every device function inlined, as the cpu backend's compiler does */
+#define AW_FN static inline __attribute__((always_inline))
+#else
 #define AW_FN static inline
+#endif
 #define AW_GLOBAL __global
 #define AW_CONSTANT __constant
 typedef uint aw_u32;
