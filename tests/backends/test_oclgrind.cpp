@@ -152,16 +152,16 @@ std::vector<Variant> variants() {
                  s.frequencies = true;
                  s.frequency_samples = 16;
                  s.frequency_every = 0.02;
-                 s.diffusion = true;
-                 s.diffusion_every = 0.04;
+                 s.output_values["observe.diffusion"] = {1};
+                 s.output_values["observe.diffusion.every"] = {0.04};
                }});
   // the actions averaged over each sample's span, in time slices (the running sum starts again in each slice)
   v.push_back({"diffusion averaged, in time slices", [](Scene& s) {
                  s.duration = s.average = 0.64;
-                 s.diffusion = true;
-                 s.diffusion_every = 0.08;
-                 s.diffusion_average = 0.08;
-                 s.diffusion_average_every = 0.02;
+                 s.output_values = {{"observe.diffusion", {1}},
+                                    {"observe.diffusion.every", {0.08}},
+                                    {"observe.diffusion.average", {0.08}},
+                                    {"observe.diffusion.average_every", {0.02}}};
                  s.slice = 0.16;
                }});
   // picked trajectories (observe.trajectories): their samples in the histogram buffer, two words a value,

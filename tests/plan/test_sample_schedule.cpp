@@ -57,13 +57,13 @@ TEST_SUITE("plan") {
     const Plan p = plan_with({});
     CHECK(p.steps_per_segment == 25);     // 0.5 T of 0.02 T
     CHECK(p.segments_per_window == 20);   // 10 T
-    CHECK(p.diffusion_stride == 1);
+    CHECK(p.strides.at("observe.diffusion.every") == 1);
     CHECK(p.energy_stride == 2);          // the energy still every 1 T
     // the same schedule with the roles exchanged
     const Plan q = plan_with({"observe.energy_error.every=0.5", "observe.diffusion.every=1"});
     CHECK(q.steps_per_segment == 25);
     CHECK(q.energy_stride == 1);
-    CHECK(q.diffusion_stride == 2);
+    CHECK(q.strides.at("observe.diffusion.every") == 2);
   }
 
   TEST_CASE("issue 37: an interval that is no multiple of the shortest is refused, naming it and the shortest") {

@@ -312,13 +312,13 @@ TEST_SUITE("scene") {
     CHECK(s.frequency_samples == 1024);
     CHECK(s.frequency_every == 0.05);
     CHECK(s.frequency_window == 2);
-    CHECK(s.diffusion);
-    CHECK(s.diffusion_every == 20.0);
-    CHECK(s.diffusion_along == std::array<double, 3>{1, 2, 0});
-    CHECK(s.diffusion_across == std::array<double, 3>{2, -1, 0});
-    CHECK(s.diffusion_fit_from == 100);
-    CHECK(s.diffusion_average == 10.0);
-    CHECK(s.diffusion_average_every == 0.5);
+    CHECK(s.output_value("observe.diffusion") == std::vector<double>{1});
+    CHECK(s.output_value("observe.diffusion.every") == std::vector<double>{20.0});
+    CHECK(s.output_value("observe.diffusion.along") == std::vector<double>{1, 2, 0});
+    CHECK(s.output_value("observe.diffusion.across") == std::vector<double>{2, -1, 0});
+    CHECK(s.output_value("observe.diffusion.fit_from") == std::vector<double>{100});
+    CHECK(s.output_value("observe.diffusion.average") == std::vector<double>{10.0});
+    CHECK(s.output_value("observe.diffusion.average_every") == std::vector<double>{0.5});
     CHECK(s.grid_kind == "plane");
     CHECK(s.grid_nside == 32);
     CHECK(s.grid_resolution == std::array<double, 2>{128, 256});
@@ -731,12 +731,28 @@ TEST_SUITE("scene") {
     CHECK(s.pos("observe.energy_error.every").set_index == 1);
   }
 
+  TEST_CASE("issue 39: observe.diffusion = true switches the actions row's table key on at its defaults") {
+    const Scene on = awtest::scene_from("[observe]\ndiffusion = true\n");
+    CHECK(on.output_value("observe.diffusion") == std::vector<double>{1});
+    CHECK(on.output_value("observe.diffusion.every") == std::vector<double>{10.0});
+    CHECK(on.output_value("observe.diffusion.along") == std::vector<double>{1, 1, 0});
+    // average_every is taken only with average: not in the echo at average = 0
+    CHECK(on.to_toml().find("diffusion = { every = 10.0, along = [1.0, 1.0, 0.0], across = [1.0, -1.0, 0.0], "
+                            "fit_from = 0.0 }\n") != std::string::npos);
+    const Scene off = awtest::scene_from("[observe]\ndiffusion = false\n");
+    CHECK(off.output_value("observe.diffusion").empty());
+    CHECK(off.to_toml().find("diffusion = false\n") != std::string::npos);
+    const Scene averaged = awtest::scene_from("", {"observe.diffusion.average=2"});
+    CHECK(averaged.output_value("observe.diffusion") == std::vector<double>{1});
+    CHECK(averaged.to_toml().find("average = 2.0, average_every = 1.0 }") != std::string::npos);
+  }
+
   TEST_CASE("issue 37: directions at the ends of the allowed range are read as written") {
     const Scene s = awtest::scene_from("", {"observe.diffusion.along=[1e-150, 1e-151, 0]",
                                             "observe.diffusion.across=[-1e150, 1e150, 1e150]",
                                             "observe.tangent_initial=[0, 0, 0, 0, 0, -1e-150]"});
-    CHECK(s.diffusion_along == std::array<double, 3>{1e-150, 1e-151, 0});
-    CHECK(s.diffusion_across == std::array<double, 3>{-1e150, 1e150, 1e150});
+    CHECK(s.output_value("observe.diffusion.along") == std::vector<double>{1e-150, 1e-151, 0});
+    CHECK(s.output_value("observe.diffusion.across") == std::vector<double>{-1e150, 1e150, 1e150});
     CHECK(s.tangent_initial.back() == -1e-150);
   }
 
@@ -862,9 +878,10 @@ TEST_SUITE("scene") {
       if (k.default_value != "(not set)") {
         const Scene s = parse("", {k.key + "=" + k.default_value});
         // a part of a table that is off by default turns the table on
-        const bool turns_on = k.key.rfind("observe.zoom.", 0) == 0 || k.key.rfind("observe.confine.", 0) == 0;
+        const bool turns_on = k.key.rfind("observe.zoom.", 0) == 0 || k.key.rfind("observe.confine.", 0) == 0 ||
+                              k.key.rfind("observe.diffusion.", 0) == 0;
         if (turns_on)
-          CHECK((s.zoom || s.confine));
+          CHECK((s.zoom || s.confine || !s.output_value("observe.diffusion").empty()));
         else
           check_same(s, d);
         CHECK(s.pos(k.key).set_index == 1);

@@ -70,8 +70,9 @@ struct Plan {
   std::int64_t steps_per_segment = 0;   // steps between two samples (the finest sample interval asked for)
   std::int64_t energy_stride = 1;       // segments between energy samples
   std::int64_t frequency_stride = 1;    // segments between frequency samples (observe.frequencies)
-  std::int64_t diffusion_stride = 1;    // segments between action samples (observe.diffusion)
-  std::int64_t diffusion_average_stride = 1;  // segments between the actions averaged into a sample
+  // segments between two samples of each sample interval of the output table's table keys
+  // (TableSubKey::interval), by dotted sub-key ("observe.<name>.every"), where taken
+  std::map<std::string, std::int64_t> strides;
   std::int64_t segments_per_window = 0; // samples per averaging window
   std::int64_t windows = 0;             // averaging windows per trajectory
   std::int64_t steps_per_trajectory = 0;

@@ -108,7 +108,8 @@ struct Scene {
   // "observe.trajectories.ids" -> its numbers; a sub-key not written takes its
   // row's default): each row declares its own (KeyTable). No field here per output.
   std::map<std::string, std::vector<double>> output_values;
-  // A sub-key's values: as written, else its row's default (none: not set, or no such key).
+  // A sub-key's values: as written, else its row's default (none: not set, or no such key);
+  // a table key's: {1} when switched on, none when off.
   std::vector<double> output_value(const std::string& key) const;
   bool initial_states = false;
   bool final_states = false;
@@ -143,17 +144,6 @@ struct Scene {
   int frequency_samples = 512;
   double frequency_every = 0.1;
   int frequency_window = 1;
-  // observe.diffusion: the actions of every trajectory every `every` T, their
-  // spreading along and across a resonance (docs/frequencies.md)
-  bool diffusion = false;
-  double diffusion_every = 10.0;
-  std::array<double, 3> diffusion_along = {1, 1, 0};
-  std::array<double, 3> diffusion_across = {1, -1, 0};
-  double diffusion_fit_from = 0;
-  // each sample the mean of the actions over the last `average` T, taken
-  // every `average_every` T (0: the actions at the sample time)
-  double diffusion_average = 0;
-  double diffusion_average_every = 1.0;
 
   // [output]
   std::string output_dir = "out";

@@ -76,8 +76,6 @@ void plan_attribute(H5Writer& h, hid_t where, const std::string& name, const Pla
     h.attr(where, "samples", static_cast<std::int64_t>(plan.scene.frequency_samples));
     h.attr(where, "every", plan.scene.frequency_every);
     h.attr(where, "window_order", static_cast<std::int64_t>(plan.scene.frequency_window));
-  } else if (name == "diffusion_every") {
-    h.attr(where, "every", plan.scene.diffusion_every);
   } else
     throw OutputError(name, "the output table names an attribute the writer does not know");
 }

@@ -102,12 +102,108 @@ const KeyTable trajectory_keys = {
     fill_trajectories,
     trajectory_data};
 
+// observe.diffusion: the actions every `every` T (each the mean over the last `average` T where it is > 0)
+double real_value(const KeyTable& t, const KeyValues& v, const std::string& name) { return t.value(v, name)[0]; }
+
+KeyProblem check_diffusion(const KeyTable& t, const KeyValues& v, const KeyPlan& p) {
+  const double every = real_value(t, v, "every"), average = real_value(t, v, "average");
+  const double average_every = real_value(t, v, "average_every"), fit_from = real_value(t, v, "fit_from");
+  if (p.ratio(p.duration, every) == 0)
+    return {t.sub("every"), p.number(every) + " T does not divide run.duration = " + p.number(p.duration) + " T"};
+  const std::vector<double> a = t.value(v, "along"), c = t.value(v, "across");
+  const double dot = a[0] * c[0] + a[1] * c[1] + a[2] * c[2];
+  const double na = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  const double nc = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  if (std::fabs(dot) > (1 - 1e-9) * na * nc)
+    return {t.sub("across"), "is parallel to observe.diffusion.along: choose a direction across it"};
+  if (average > 0) {
+    if (p.ratio(average, average_every) == 0)
+      return {t.sub("average_every"), p.number(average_every) + " T does not divide observe.diffusion.average = " +
+                                          p.number(average) + " T"};
+    if (average > every)
+      return {t.sub("average"), p.number(average) + " T is longer than the sample interval observe.diffusion.every = " +
+                                    p.number(every) + " T: the spans of two samples would overlap"};
+    if (p.slices > 1 && p.slice_segments % p.stride(t.sub("every")) != 0)
+      return {"run.slice", "with observe.diffusion.average a time slice ends at a sample time: run.slice = " +
+                               p.number(p.slice) + " T must be a multiple of observe.diffusion.every = " +
+                               p.number(every) + " T"};
+  }
+  if (!(fit_from < p.duration))
+    return {t.sub("fit_from"), p.number(fit_from) + " T is not before the end of the run (run.duration = " +
+                                   p.number(p.duration) + " T)"};
+  return {};
+}
+
+void fill_diffusion(const KeyTable& t, const KeyValues& v, const KeyPlan& p, IntParams& ip) {
+  ip.diffusion_stride = p.stride(t.sub("every"));
+  ip.diffusion_average_stride = p.stride(t.sub("average_every"));
+  ip.diffusion_average_points = 0;
+  if (!t.on(v)) return;
+  ip.diffusion_samples = p.ratio(p.duration, real_value(t, v, "every"));
+  if (const double average = real_value(t, v, "average"); average > 0)
+    ip.diffusion_average_points = p.ratio(average, real_value(t, v, "average_every"));
+}
+
+void fill_diffusion_reals(const KeyTable& t, const KeyValues& v, const KeyPlan& p, RealParams& rp) {
+  if (const double average = real_value(t, v, "average"); average > 0)
+    rp.diffusion_average_weight = 1.0 / static_cast<double>(p.ratio(average, real_value(t, v, "average_every")));
+}
+
+// the sample interval, an attribute of diffusion.h5
+std::vector<KeyData> diffusion_data(const KeyTable& t, const KeyValues& v, const KeyPlan&, const IntParams&) {
+  return {{"every", false, {real_value(t, v, "every")}}};
+}
+
+const KeyTable diffusion_keys = {
+    "observe.diffusion", AW_F_DIFFUSION, 0,
+    "{ every = T, along = [..], across = [..], fit_from = T, average = T, average_every = T }, true or false",
+    "a table { every = <T>, along = [a, b, c], across = [a, b, c], fit_from = <T>, average = <T>, "
+    "average_every = <T> }, true or false",
+    "Arnold diffusion (docs/frequencies.md): the actions (momenta) of every trajectory every `every` T, the "
+    "moments of their displacement along and across a resonance, and the diffusion coefficient from the "
+    "growth of the variance with a bootstrap error bar and the growth's linearity (a warning where it is not "
+    "diffusive): diffusion.h5, diffusion.csv, diffusion.png.",
+    {{"every", TableSubKey::Kind::Real, "> 0, divides run.duration, a multiple of the shortest sample interval",
+      "a finite float greater than 0 (in units of T)", positive,
+      "Sample interval of the actions, in T; it may be shorter than observe.energy_error.every (the rule of "
+      "observe.frequencies.every).",
+      {10.0}, true},
+     {"along", TableSubKey::Kind::Direction, kDirectionRange,
+      std::string("an array [a, b, c] of floats, ") + kDirectionRange, nullptr,
+      "The resonance's direction in action space (normalised).", {1, 1, 0}},
+     {"across", TableSubKey::Kind::Direction, std::string(kDirectionRange) + ", not along",
+      std::string("an array [a, b, c] of floats, ") + kDirectionRange, nullptr,
+      "A direction across the resonance (made orthogonal to `along`, normalised).", {1, -1, 0}},
+     {"fit_from", TableSubKey::Kind::Real, ">= 0", "a finite float >= 0 (in units of T)",
+      [](const std::vector<double>& x) { return x[0] >= 0; },
+      "The fit of the variance's growth starts at this time, in T (after the first fast oscillations).", {0.0}},
+     {"average", TableSubKey::Kind::Real, ">= 0, at most observe.diffusion.every", "a finite float >= 0 (in units of T)",
+      [](const std::vector<double>& x) { return x[0] >= 0; },
+      "Each sample after t = 0 is the mean of the actions over the last `average` T, taken every "
+      "observe.diffusion.average_every T: the fast oscillations and the libration in the resonance average out, "
+      "and D is fitted to the spreading of the means (0: the actions at the sample times).",
+      {0.0}, false, "average"},
+     {"average_every", TableSubKey::Kind::Real, "> 0, divides observe.diffusion.average",
+      "a finite float greater than 0 (in units of T)", positive,
+      "Interval between the actions averaged into a sample, in T (a multiple of integrator.step).", {1.0}, true,
+      "average"}},
+    check_diffusion,
+    fill_diffusion,
+    diffusion_data,
+    true,
+    fill_diffusion_reals};
+
 }  // namespace
 
 bool KeyTable::on(const KeyValues& v) const {
+  if (true_switches_on && v.count(key)) return true;
   for (const TableSubKey& k : keys)
     if (k.default_value.empty() && written(v, k.name)) return true;
   return false;
+}
+
+bool KeyTable::taken(const KeyValues& v, const TableSubKey& k) const {
+  return k.only_with.empty() || value(v, k.only_with).at(0) != 0;
 }
 
 std::vector<double> KeyTable::value(const KeyValues& v, const std::string& name) const {
@@ -179,9 +275,9 @@ const std::vector<RecordOutput>& record_outputs() {
         {"status", true, 0, 1, "the trajectory's status at the end (0 ok: a flagged one is left out of the moments)"}},
        "the actions of every trajectory at every sample time (observe.diffusion; the moments and D: diffusion.csv, "
        "summary.json)",
-       {"diffusion_every"},
        {},
        {},
+       {diffusion_keys},
        nullptr,
        {"diffusion"}},
       {"trajectories", AW_OUT_TRAJECTORIES, AW_F_TRAJECTORIES, fixed(AW_PICK_REALS), fixed(AW_PICK_INTS),

@@ -78,9 +78,14 @@ struct OutputSwitch {
 // numbers (integers held exactly), for the sub-keys written only.
 using KeyValues = std::map<std::string, std::vector<double>>;
 
+// The allowed values of a direction (TableSubKey::Kind::Direction, observe.tangent_initial):
+// normalised by its length, whose square must neither overflow nor underflow.
+constexpr const char* kDirectionRange = "largest absolute component from 1e-150 to 1e150";
+
 // One sub-key of a table key (KeyTable): its value is a number or an array.
 struct TableSubKey {
-  enum class Kind { Integer, Real, Integers };
+  // Direction: an array of 3 floats, a direction (the key table's read_direction)
+  enum class Kind { Integer, Real, Integers, Direction };
   std::string name;  // after the table's key: "ids" is "observe.trajectories.ids"
   Kind kind = Kind::Real;
   std::string allowed;  // as the docs show it
@@ -90,6 +95,11 @@ struct TableSubKey {
   std::string meaning;
   // its value when not written; none: not set, and writing it switches the table on
   std::vector<double> default_value = {};
+  // a sample interval, in T: the schedule's segment is the shortest of them (and of the
+  // scene's own), and each is a whole number of segments (KeyPlan::strides)
+  bool interval = false;
+  // taken (in the table's value, as a sample interval) only where this sub-key's value is not 0 ("": always)
+  std::string only_with = {};
 };
 
 // What a table key's checks and parameters take from the plan: the schedule,
@@ -103,6 +113,16 @@ struct KeyPlan {
   std::int64_t (*ratio)(double x, double unit) = nullptr;
   std::string (*number)(double v) = nullptr;
   std::string (*count)(std::uint64_t n) = nullptr;
+  std::int64_t slices = 1;          // time slices per trajectory (run.slice) ...
+  std::int64_t slice_segments = 0;  // ... and the segments of one
+  double slice = 0;                 // run.slice, T
+  // segments between two samples of each sample interval (TableSubKey::interval), by
+  // dotted sub-key ("observe.<name>.every"); 1 where it is not taken
+  std::map<std::string, std::int64_t> strides = {};
+  std::int64_t stride(const std::string& key) const {
+    const auto it = strides.find(key);
+    return it == strides.end() ? 1 : it->second;
+  }
 };
 
 // A key's value refused together with the plan: the key named, and why.
@@ -140,11 +160,18 @@ struct KeyTable {
   std::function<void(const KeyTable& t, const Values& v, const KeyPlan& p, IntParams& ip)> fill = nullptr;
   std::function<std::vector<KeyData>(const KeyTable& t, const Values& v, const KeyPlan& p, const IntParams& ip)> data =
       nullptr;
+  // true (or a table) switches it on with every sub-key at its default: kept as the
+  // key's own entry in Scene::output_values; else only a sub-key without a default does
+  bool true_switches_on = false;
+  // the kernels' real parameters, when switched on
+  std::function<void(const KeyTable& t, const Values& v, const KeyPlan& p, RealParams& rp)> fill_reals = nullptr;
 
   std::string effect() const { return key.substr(key.find('.') + 1); }
   std::string sub(const std::string& name) const { return key + "." + name; }
-  // on: a sub-key without a default is written
+  // on: switched on by true (true_switches_on), or a sub-key without a default is written
   bool on(const Values& v) const;
+  // a sub-key is taken: it has no `only_with`, or that sub-key's value is not 0
+  bool taken(const Values& v, const TableSubKey& k) const;
   // a sub-key's values: as written, else its default
   std::vector<double> value(const Values& v, const std::string& name) const;
   bool written(const Values& v, const std::string& name) const { return v.count(sub(name)) > 0; }

@@ -1,9 +1,9 @@
 // arnoldweb: the planner's part for the analyses of trajectories over time
 // (docs/frequencies.md): the frequency analysis (observe.frequencies: two
-// windows of samples, their work memory) and the action samples of the
-// diffusion coefficient (observe.diffusion), and the output table's table keys
-// (observe.trajectories, ...: their rows' checks and parameters): their checks
-// against the schedule and their parameters in the kernels' blocks.
+// windows of samples, their work memory), and the output table's table keys
+// (observe.trajectories, the actions' samples, ...: their rows' checks and
+// parameters): their checks against the schedule and their parameters in the
+// kernels' blocks.
 #pragma once
 
 #include "arnoldweb/plan.hpp"
@@ -21,6 +21,6 @@ void plan_analysis(const Scene& scene, const Plan& p);
 
 // Their parameters (the strides come from the schedule).
 void fill_analysis_ints(const Scene& scene, const Plan& p, IntParams& ip);
-void fill_analysis_reals(const Scene& scene, RealParams& rp);
+void fill_analysis_reals(const Scene& scene, const Plan& p, RealParams& rp);
 
 }  // namespace arnoldweb::detail

@@ -139,7 +139,7 @@ void fill_reals(const Scene& scene, const Plan& p, detail::RealParams& rp) {
   if (scene.zoom) region_of(scene.zoom_center, scene.zoom_width, rp.zoom);
   if (scene.confine) region_of(scene.confine_center, scene.confine_width, rp.confine);
   detail::fill_indicator_reals(scene, p, rp);
-  detail::fill_analysis_reals(scene, rp);
+  detail::fill_analysis_reals(scene, p, rp);
 }
 
 // The parameters of the initial kind.

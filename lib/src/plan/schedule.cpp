@@ -5,8 +5,11 @@
 
 #include <string>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 #include "aw_params.h"
+#include "output_table/output_table.hpp"
 #include "plan/checks.hpp"
 
 namespace arnoldweb::detail {
@@ -53,6 +56,18 @@ void plan_slices(const Scene& scene, Plan& p) {
   p.slices = (segments + per_slice - 1) / per_slice;
 }
 
+// The sample intervals of the output table's table keys switched on (TableSubKey::interval),
+// where taken, in table order: each dotted sub-key and its value in T.
+std::vector<std::pair<std::string, double>> table_intervals(const Scene& scene) {
+  std::vector<std::pair<std::string, double>> all;
+  for (const KeyTable* t : key_tables())
+    if (t->on(scene.output_values))
+      for (const TableSubKey& k : t->keys)
+        if (k.interval && t->taken(scene.output_values, k))
+          all.emplace_back(t->sub(k.name), t->value(scene.output_values, k.name).at(0));
+  return all;
+}
+
 }  // namespace
 
 void plan_schedule(const Scene& scene, Plan& p) {
@@ -72,20 +87,19 @@ void plan_schedule(const Scene& scene, Plan& p) {
   // The segment: the finest sample interval asked for (the energy's, the
   // frequencies', the actions'); every other is a whole number of segments.
   double unit = energy ? scene.energy_every : scene.average;
-  const char* unit_key = energy ? "observe.energy_error.every" : "run.average";
+  std::string unit_key = energy ? "observe.energy_error.every" : "run.average";
   if (scene.frequencies && scene.frequency_every < unit) unit = scene.frequency_every, unit_key = "observe.frequencies.every";
-  if (scene.diffusion && scene.diffusion_every < unit) unit = scene.diffusion_every, unit_key = "observe.diffusion.every";
-  const bool averaged = scene.diffusion && scene.diffusion_average > 0;
-  if (averaged && scene.diffusion_average_every < unit)
-    unit = scene.diffusion_average_every, unit_key = "observe.diffusion.average_every";
+  const std::vector<std::pair<std::string, double>> intervals = table_intervals(scene);
+  for (const auto& [key, every] : intervals)
+    if (every < unit) unit = every, unit_key = key;
   p.segments_per_window = exact_ratio(scene.average, unit);
   const std::int64_t seg_steps = exact_ratio(unit, p.step);
   if (p.segments_per_window == 0 || seg_steps == 0 || seg_steps * p.segments_per_window != per_window) {
-    if (std::string(unit_key) == "run.average")
+    if (unit_key == "run.average")
       fail_at(scene, "run.average", "run.average = " + fmt(scene.average) + " T is not a multiple of integrator.step");
     fail_at(scene, unit_key,
-            std::string(std::string(unit_key) == "observe.energy_error.every" ? "the energy sample interval "
-                                                                               : "the sample interval ") +
+            std::string(unit_key == "observe.energy_error.every" ? "the energy sample interval "
+                                                                  : "the sample interval ") +
                 fmt(unit) + " T must divide run.average = " + fmt(scene.average) +
                 " T and be a multiple of integrator.step = " + fmt(p.step) + " T");
   }
@@ -101,8 +115,8 @@ void plan_schedule(const Scene& scene, Plan& p) {
   };
   p.energy_stride = energy ? stride(scene.energy_every, "observe.energy_error.every") : 1;
   p.frequency_stride = scene.frequencies ? stride(scene.frequency_every, "observe.frequencies.every") : 1;
-  p.diffusion_stride = scene.diffusion ? stride(scene.diffusion_every, "observe.diffusion.every") : 1;
-  p.diffusion_average_stride = averaged ? stride(scene.diffusion_average_every, "observe.diffusion.average_every") : 1;
+  p.strides.clear();
+  for (const auto& [key, every] : intervals) p.strides[key] = stride(every, key.c_str());
   p.steps_per_trajectory = p.windows * per_window;
   plan_slices(scene, p);
   p.trajectory_steps = static_cast<double>(scene.trajectories) * static_cast<double>(p.steps_per_trajectory);

@@ -53,6 +53,10 @@ std::string not_diffusive(const char* direction, const DiffusionFit& f, double t
          " is not a diffusion coefficient here (docs/frequencies.md)";
 }
 
+// The key of the diffusion analysis (the actions row's table key) and a number of its sub-keys.
+const std::string kKey = "observe.diffusion";
+double value(const Plan& plan, const char* name) { return plan.scene.output_value(kKey + "." + name).at(0); }
+
 // The actions of the trajectories that ended with status ok, at t_k = k every.
 // Averaged samples (observe.diffusion.average) start at t_1: the record at
 // t = 0 is the instantaneous action, not a mean, and is left out, so that the
@@ -60,11 +64,11 @@ std::string not_diffusive(const char* direction, const DiffusionFit& f, double t
 ActionSamples samples_of(const Plan& plan, const Records& rec) {
   ActionSamples s;
   s.dim = 3;
-  const std::size_t first = plan.scene.diffusion_average > 0 ? 1 : 0;
+  const std::size_t first = value(plan, "average") > 0 ? 1 : 0;
   const std::size_t records = rec.reals_per / 3;
   s.times = records > first ? records - first : 0;
   for (std::size_t k = first; k < records; ++k)
-    s.t.push_back(plan.start_time() + static_cast<double>(k) * plan.scene.diffusion_every);
+    s.t.push_back(plan.start_time() + static_cast<double>(k) * value(plan, "every"));
   const std::uint64_t n = rec.count();
   for (std::uint64_t i = 0; i < n; ++i) {
     if (rec.ints[i * rec.ints_per] != AW_STATUS_OK) continue;
@@ -77,16 +81,15 @@ ActionSamples samples_of(const Plan& plan, const Records& rec) {
 }
 
 json diffusion(const Plan& plan, const Records& rec) {
-  const Scene& sc = plan.scene;
   const ActionSamples s = samples_of(plan, rec);
-  const std::vector<double> along(sc.diffusion_along.begin(), sc.diffusion_along.end());
-  const std::vector<double> across(sc.diffusion_across.begin(), sc.diffusion_across.end());
-  json j = {{"every", sc.diffusion_every},
+  const std::vector<double> along = plan.scene.output_value(kKey + ".along");
+  const std::vector<double> across = plan.scene.output_value(kKey + ".across");
+  json j = {{"every", value(plan, "every")},
             {"along", along},
             {"across", across},
-            {"fit_from", sc.diffusion_fit_from},
-            {"average", sc.diffusion_average},
-            {"average_every", sc.diffusion_average_every},
+            {"fit_from", value(plan, "fit_from")},
+            {"average", value(plan, "average")},
+            {"average_every", value(plan, "average_every")},
             {"flagged", rec.count() - s.trajectories},
             {"definition", "Var[e . dI](t) = sigma0^2 + 2 D t by least squares over t >= fit_from; D in action^2 per "
                            "T; error: bootstrap over trajectories; linearity: D of the two halves of the fitted "
@@ -95,7 +98,7 @@ json diffusion(const Plan& plan, const Records& rec) {
   try {
     const DiffusionMoments m = diffusion_moments(s, {along, across});
     DiffusionOptions o;
-    o.t_min = plan.start_time() + sc.diffusion_fit_from;
+    o.t_min = plan.start_time() + value(plan, "fit_from");
     j["trajectories"] = m.used;
     j["excluded"] = m.excluded;
     const DiffusionFit along_fit = fit_diffusion(s, along, o);
@@ -128,7 +131,7 @@ json diffusion(const Plan& plan, const Records& rec) {
 }  // namespace
 
 void analyse(const Plan& plan, Result& result) {
-  if (plan.scene.diffusion)
+  if (plan.kernel.features & AW_F_DIFFUSION)
     if (const Records* rec = result.records_of("actions"); rec && rec->count() > 0)
       result.analyses["diffusion"] = diffusion(plan, *rec).dump();
 }

@@ -566,11 +566,7 @@ void observe_keys(Rows& add) {
       "Frame boundaries, in T.");
 }
 
-// Frequency analysis and diffusion (docs/frequencies.md).
-std::string triple_literal(const std::array<double, 3>& v) {
-  return "[" + toml_double(v[0]) + ", " + toml_double(v[1]) + ", " + toml_double(v[2]) + "]";
-}
-// A direction (observe.diffusion.along and .across, observe.tangent_initial) is
+// A direction (observe.tangent_initial, a TableSubKey::Kind::Direction: observe.diffusion.along) is
 // normalised by its length: its largest absolute component must lie where the sum of the
 // squares neither overflows nor underflows ([1e200, 1e200, 0] squared is inf,
 // [1e-170, 1e-170, 0] squared is 0). Reads `count` floats into `out`.
@@ -588,22 +584,18 @@ bool read_direction(Reader& r, const std::string& key, const toml::node& n, std:
   out = v;
   return true;
 }
-constexpr const char* kDirectionRange = "largest absolute component from 1e-150 to 1e150";
-Read direction_into(std::array<double, 3> Scene::*f) {
-  return [f](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
-    std::vector<double> v;
-    if (read_direction(r, key, n, 3, v)) s.*f = {v[0], v[1], v[2]};
-  };
-}
+using detail::kDirectionRange;
 
 // The table keys of the output table's rows (lib/src/output_table/, KeyTable),
 // kept in Scene::output_values: the table key (false, or a table of its
 // sub-keys) and one row per sub-key.
 std::string sub_key_literal(const detail::TableSubKey& k, const std::vector<double>& v) {
+  using Kind = detail::TableSubKey::Kind;
   const auto number = [&](double x) {
-    return k.kind == detail::TableSubKey::Kind::Real ? toml_double(x) : std::to_string(static_cast<long long>(x));
+    return k.kind == Kind::Integer || k.kind == Kind::Integers ? std::to_string(static_cast<long long>(x))
+                                                               : toml_double(x);
   };
-  if (k.kind != detail::TableSubKey::Kind::Integers) return number(v[0]);
+  if (k.kind == Kind::Integer || k.kind == Kind::Real) return number(v[0]);
   std::string s = "[";
   for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + number(v[i]);
   return s + "]";
@@ -624,32 +616,40 @@ void read_sub_key(const detail::TableSubKey& k, Reader& r, const std::string& ke
     case detail::TableSubKey::Kind::Integers:
       read = r.reals(key, n, v, 0, k.ok);
       break;
+    case detail::TableSubKey::Kind::Direction:
+      read = read_direction(r, key, n, 3, v);
+      break;
   }
   if (read) s.output_values[key] = v;
 }
 void output_table_keys(Rows& add) {
   for (const detail::KeyTable* t : detail::key_tables()) {
     const detail::KeyTable& table = *t;  // a row of the static output table
-    add(table.key, "table or false", table.allowed, table.must,
+    add(table.key, table.true_switches_on ? "table or boolean" : "table or false", table.allowed, table.must,
         [&table](const Scene& s) {
           if (!table.on(s.output_values)) return boolean(false);
           std::string text;
           for (const detail::TableSubKey& k : table.keys) {
             const std::vector<double> v = table.value(s.output_values, k.name);
-            if (!v.empty()) text += (text.empty() ? "" : ", ") + k.name + " = " + sub_key_literal(k, v);
+            if (!v.empty() && table.taken(s.output_values, k))
+              text += (text.empty() ? "" : ", ") + k.name + " = " + sub_key_literal(k, v);
           }
           return "{ " + text + " }";
         },
         [&table](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
           bool on = false;
-          if (r.switch_table(key, n, on, false) && !on)
-            for (const detail::TableSubKey& k : table.keys) s.output_values.erase(table.sub(k.name));
+          if (!r.switch_table(key, n, on, table.true_switches_on)) return;
+          if (on && table.true_switches_on) s.output_values[key] = {1};
+          if (on) return;
+          s.output_values.erase(key);
+          for (const detail::TableSubKey& k : table.keys) s.output_values.erase(table.sub(k.name));
         },
         table.meaning, Shape::Composite);
     for (const detail::TableSubKey& k : table.keys) {
-      const char* type = k.kind == detail::TableSubKey::Kind::Integers ? "array of integers"
-                         : k.kind == detail::TableSubKey::Kind::Integer ? "integer"
-                                                                        : "float";
+      const char* type = k.kind == detail::TableSubKey::Kind::Integers    ? "array of integers"
+                         : k.kind == detail::TableSubKey::Kind::Integer   ? "integer"
+                         : k.kind == detail::TableSubKey::Kind::Direction ? "array of 3 floats"
+                                                                          : "float";
       add(table.sub(k.name), type, k.allowed, k.must,
           [&table, &k](const Scene& s) {
             const std::vector<double> v = table.value(s.output_values, k.name);
@@ -689,52 +689,6 @@ void analysis_keys(Rows& add) {
   add("observe.frequencies.window", "integer", "0 to 4", "an integer from 0 to 4", integer_of(&Scene::frequency_window),
       integer_into(&Scene::frequency_window, [](std::int64_t v) { return v >= 0 && v <= 4; }),
       "Order p of Laskar's window chi_p (1: Hanning, frequency error ~ 1/T^4; 2: ~ 1/T^6; 0: none).");
-  add("observe.diffusion", "table or boolean",
-      "{ every = T, along = [..], across = [..], fit_from = T, average = T, average_every = T }, true or false",
-      "a table { every = <T>, along = [a, b, c], across = [a, b, c], fit_from = <T>, average = <T>, average_every = <T> }, true or false",
-      [](const Scene& s) {
-        return s.diffusion ? "{ every = " + toml_double(s.diffusion_every) + ", along = " +
-                                 triple_literal(s.diffusion_along) + ", across = " + triple_literal(s.diffusion_across) +
-                                 ", fit_from = " + toml_double(s.diffusion_fit_from) +
-                                 (s.diffusion_average > 0 ? ", average = " + toml_double(s.diffusion_average) +
-                                                                ", average_every = " +
-                                                                toml_double(s.diffusion_average_every)
-                                                          : std::string()) +
-                                 " }"
-                           : boolean(false);
-      },
-      switch_into(&Scene::diffusion, true),
-      "Arnold diffusion (docs/frequencies.md): the actions (momenta) of every trajectory every `every` T, the "
-      "moments of their displacement along and across a resonance, and the diffusion coefficient from the "
-      "growth of the variance with a bootstrap error bar and the growth's linearity (a warning where it is not "
-      "diffusive): diffusion.h5, diffusion.csv, diffusion.png.",
-      Shape::Composite);
-  add("observe.diffusion.every", "float", "> 0, divides run.duration, a multiple of the shortest sample interval",
-      "a finite float greater than 0 (in units of T)", real_of(&Scene::diffusion_every),
-      real_into(&Scene::diffusion_every, positive),
-      "Sample interval of the actions, in T; it may be shorter than observe.energy_error.every (the rule of "
-      "observe.frequencies.every).");
-  add("observe.diffusion.along", "array of 3 floats", kDirectionRange, std::string("an array [a, b, c] of floats, ") + kDirectionRange,
-      [](const Scene& s) { return triple_literal(s.diffusion_along); }, direction_into(&Scene::diffusion_along),
-      "The resonance's direction in action space (normalised).");
-  add("observe.diffusion.across", "array of 3 floats", std::string(kDirectionRange) + ", not along",
-      std::string("an array [a, b, c] of floats, ") + kDirectionRange,
-      [](const Scene& s) { return triple_literal(s.diffusion_across); }, direction_into(&Scene::diffusion_across),
-      "A direction across the resonance (made orthogonal to `along`, normalised).");
-  add("observe.diffusion.fit_from", "float", ">= 0", "a finite float >= 0 (in units of T)",
-      real_of(&Scene::diffusion_fit_from),
-      real_into(&Scene::diffusion_fit_from, [](double v) { return v >= 0; }),
-      "The fit of the variance's growth starts at this time, in T (after the first fast oscillations).");
-  add("observe.diffusion.average", "float", ">= 0, at most observe.diffusion.every",
-      "a finite float >= 0 (in units of T)", real_of(&Scene::diffusion_average),
-      real_into(&Scene::diffusion_average, [](double v) { return v >= 0; }),
-      "Each sample after t = 0 is the mean of the actions over the last `average` T, taken every "
-      "observe.diffusion.average_every T: the fast oscillations and the libration in the resonance average out, "
-      "and D is fitted to the spreading of the means (0: the actions at the sample times).");
-  add("observe.diffusion.average_every", "float", "> 0, divides observe.diffusion.average",
-      "a finite float greater than 0 (in units of T)", real_of(&Scene::diffusion_average_every),
-      real_into(&Scene::diffusion_average_every, positive),
-      "Interval between the actions averaged into a sample, in T (a multiple of integrator.step).");
 }
 
 void output_keys(Rows& add) {

@@ -35,9 +35,11 @@ bool Scene::writes_format(const std::string& f) const {
 }
 
 std::vector<double> Scene::output_value(const std::string& key) const {
-  for (const detail::KeyTable* t : detail::key_tables())
+  for (const detail::KeyTable* t : detail::key_tables()) {
+    if (t->key == key) return t->on(output_values) ? std::vector<double>{1} : std::vector<double>{};
     for (const detail::TableSubKey& k : t->keys)
       if (t->sub(k.name) == key) return t->value(output_values, k.name);
+  }
   return {};
 }
 
