@@ -567,11 +567,14 @@ def svg(rows, res, path):
     W, H, m = 640, 420, 64
     eps = res["eps"]
     X0, X1 = min(e ** -a for e in eps), max(e ** -a for e in eps)
-    marks = []
+    marks, resolved_places = [], []
     for r in rows:
         kind, lo, hi = classify(r)
-        u = par["u"][int(r["place"])]
+        place = int(r["place"])
+        u = par["u"][place]
         marks.append((r["eps"] ** -a, kind, (lo - u) / math.log(10), (hi - u) / math.log(10)))
+        if kind == "point":
+            resolved_places.append(place)
     # the frame holds the resolved runs and the intervals; a place whose runs are all upper limits has
     # no bounded offset, so its limits may lie far above: they are counted, not drawn
     ys = [y for _, kind, lo, hi in marks if kind != "upper" for y in (lo, hi)]
@@ -600,8 +603,7 @@ def svg(rows, res, path):
                f'y2="{Y(law[1][1]):.1f}" stroke="#c33" stroke-width="2"/>')
     # the power law has its own place offsets: on this picture's scale (less the law's) its curve moves
     # by their mean difference over the resolved runs
-    pts = [int(r["place"]) for r in rows if classify(r)[0] == "point"]
-    shift = sum(pw["u"][p] - par["u"][p] for p in pts) / len(pts)
+    shift = sum(pw["u"][p] - par["u"][p] for p in resolved_places) / len(resolved_places)
     curve = [X0 + (X1 - X0) * k / 60 for k in range(61)]
     out.append('<polyline fill="none" stroke="#36c" stroke-width="2" stroke-dasharray="5 4" points="' +
                " ".join(f"{X(x):.1f},{Y((pw['b0'] + shift + pw['b1'] * math.log(x ** (-1 / a))) / math.log(10)):.1f}"
