@@ -114,9 +114,8 @@ class OpenclDevice final : public ComputeDevice {
     options_ = config.defines() + " -DAW_LANES=" + std::to_string(lanes_) + (teams_ ? " -DAW_NAFF_TEAM_PARALLEL=1" : "");
     frequencies_ = (config.features & AW_F_FREQUENCIES) != 0;
     // CPU devices: every device function inlined (aw_dialect.h). PoCL 3.1 left the force-gradient
-    // kick a call, its lanes' state passed through memory: the default scene 1.25x slower (same
-    // bits). Not with the frequency analysis, whose kernel was 3 % slower inlined (docs/performance.md)
-    if (info_.is_cpu && !frequencies_) options_ += " -DAW_OPENCL_ALWAYS_INLINE=1";
+    // kick a call, its lanes' state passed through memory: the default scene 1.25x slower (same bits)
+    if (info_.is_cpu) options_ += " -DAW_OPENCL_ALWAYS_INLINE=1";
     source_ = ensemble_source(config);
     if (fl && (device_.get_info<cl_device_fp_config>(CL_DEVICE_SINGLE_FP_CONFIG) & CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT))
       options_ += " -cl-fp32-correctly-rounded-divide-sqrt";
