@@ -149,9 +149,9 @@ std::vector<Variant> variants() {
   // frequency analysis (the sampling, the analysis kernel) and the actions' samples
   v.push_back({"frequencies and diffusion", [](Scene& s) {
                  s.duration = s.average = 0.64;
-                 s.frequencies = true;
-                 s.frequency_samples = 16;
-                 s.frequency_every = 0.02;
+                 s.output_values["observe.frequencies"] = {1};
+                 s.output_values["observe.frequencies.samples"] = {16};
+                 s.output_values["observe.frequencies.every"] = {0.02};
                  s.output_values["observe.diffusion"] = {1};
                  s.output_values["observe.diffusion.every"] = {0.04};
                }});

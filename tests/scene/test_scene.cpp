@@ -308,10 +308,10 @@ TEST_SUITE("scene") {
     CHECK(s.observes("observe.megno"));
     CHECK(s.observes("observe.lyapunov"));
     CHECK(s.tangent_initial == std::vector<double>{1, 0, 0, 0, 0, 2});
-    CHECK(s.frequencies);
-    CHECK(s.frequency_samples == 1024);
-    CHECK(s.frequency_every == 0.05);
-    CHECK(s.frequency_window == 2);
+    CHECK(s.output_value("observe.frequencies") == std::vector<double>{1});
+    CHECK(s.output_value("observe.frequencies.samples") == std::vector<double>{1024});
+    CHECK(s.output_value("observe.frequencies.every") == std::vector<double>{0.05});
+    CHECK(s.output_value("observe.frequencies.window") == std::vector<double>{2});
     CHECK(s.output_value("observe.diffusion") == std::vector<double>{1});
     CHECK(s.output_value("observe.diffusion.every") == std::vector<double>{20.0});
     CHECK(s.output_value("observe.diffusion.along") == std::vector<double>{1, 2, 0});
@@ -747,6 +747,23 @@ TEST_SUITE("scene") {
     CHECK(averaged.to_toml().find("average = 2.0, average_every = 1.0 }") != std::string::npos);
   }
 
+  TEST_CASE("issue 39: observe.frequencies is the frequencies row's table key: true, a table, a sub-key, false") {
+    const Scene on = awtest::scene_from("[observe]\nfrequencies = true\n");
+    CHECK(on.output_value("observe.frequencies") == std::vector<double>{1});
+    CHECK(on.output_value("observe.frequencies.samples") == std::vector<double>{512});
+    CHECK(on.output_value("observe.frequencies.every") == std::vector<double>{0.1});
+    CHECK(on.output_value("observe.frequencies.window") == std::vector<double>{1});
+    CHECK(on.to_toml().find("frequencies = { samples = 512, every = 0.1, window = 1 }\n") != std::string::npos);
+    const Scene off = awtest::scene_from("[observe]\nfrequencies = { samples = 64 }\n", {"observe.frequencies=false"});
+    CHECK(off.output_value("observe.frequencies").empty());
+    CHECK(off.output_value("observe.frequencies.samples") == std::vector<double>{512});
+    CHECK(off.to_toml().find("frequencies = false\n") != std::string::npos);
+    // a sub-key alone switches the analysis on, as before the table key
+    const Scene window = awtest::scene_from("", {"observe.frequencies.window=0"});
+    CHECK(window.output_value("observe.frequencies") == std::vector<double>{1});
+    CHECK(window.to_toml().find("frequencies = { samples = 512, every = 0.1, window = 0 }\n") != std::string::npos);
+  }
+
   TEST_CASE("issue 37: directions at the ends of the allowed range are read as written") {
     const Scene s = awtest::scene_from("", {"observe.diffusion.along=[1e-150, 1e-151, 0]",
                                             "observe.diffusion.across=[-1e150, 1e150, 1e150]",
@@ -878,10 +895,11 @@ TEST_SUITE("scene") {
       if (k.default_value != "(not set)") {
         const Scene s = parse("", {k.key + "=" + k.default_value});
         // a part of a table that is off by default turns the table on
-        const bool turns_on = k.key.rfind("observe.zoom.", 0) == 0 || k.key.rfind("observe.confine.", 0) == 0 ||
-                              k.key.rfind("observe.diffusion.", 0) == 0;
+        const std::string table = k.key.substr(0, k.key.rfind('.'));
+        const bool turns_on = table == "observe.zoom" || table == "observe.confine" ||
+                              table == "observe.diffusion" || table == "observe.frequencies";
         if (turns_on)
-          CHECK((s.zoom || s.confine || !s.output_value("observe.diffusion").empty()));
+          CHECK((s.zoom || s.confine || !s.output_value(table).empty()));
         else
           check_same(s, d);
         CHECK(s.pos(k.key).set_index == 1);

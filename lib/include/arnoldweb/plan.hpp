@@ -69,7 +69,6 @@ struct Plan {
   double step = 0;                      // in T
   std::int64_t steps_per_segment = 0;   // steps between two samples (the finest sample interval asked for)
   std::int64_t energy_stride = 1;       // segments between energy samples
-  std::int64_t frequency_stride = 1;    // segments between frequency samples (observe.frequencies)
   // segments between two samples of each sample interval of the output table's table keys
   // (TableSubKey::interval), by dotted sub-key ("observe.<name>.every"), where taken
   std::map<std::string, std::int64_t> strides;

@@ -138,12 +138,6 @@ struct Scene {
   double grid_fixed = 0.0;                          // ensemble.grid.fixed (plane: the third momentum)
   std::vector<double> grid_position = {0.0, 0.0, 0.0};  // ensemble.grid.position, radians
 
-  // observe.frequencies: the leading frequency of every angle over two windows
-  // of `samples` samples `every` T apart, Laskar's window of order p (docs/frequencies.md)
-  bool frequencies = false;
-  int frequency_samples = 512;
-  double frequency_every = 0.1;
-  int frequency_window = 1;
 
   // [output]
   std::string output_dir = "out";

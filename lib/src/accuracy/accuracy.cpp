@@ -87,7 +87,6 @@ Scene pilot_scene(const Scene& s, const std::string& method, double step, std::u
   p.frame_times.clear();
   p.switches.clear();  // the output table's switches and table keys: every output off
   p.output_values.clear();
-  p.frequencies = false;
   p.slice = 0;
   p.panels.clear();
   return p;

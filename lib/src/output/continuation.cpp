@@ -65,7 +65,6 @@ const std::vector<std::string>& continue_keys() {
         "run.device",           "run.checkpoint_every", "run.slice",         "run.average",
         "ensemble.chunk",       "observe.velocity_map", "observe.energy_error", "observe.initial_states",
         "observe.final_states", "observe.zoom",         "observe.frames",    "observe.tangent_initial",
-        "observe.frequencies",
         "output.dir",           "output.images"};
     for (const detail::OutputSwitch* w : detail::output_switches()) k.push_back(w->key);
     for (const detail::KeyTable* t : detail::key_tables()) k.push_back(t->key);

@@ -68,7 +68,7 @@ double part_bytes(const Plan& p) {
   const detail::IntParams& ip = detail::params(p).ints;
   b += n * static_cast<double>(ip.rec_reals + ip.rec_ints) * 8 * 1.5 + 16e3;  // the records' files (and derived datasets)
   if (p.kernel.features & AW_F_TANGENT) b += p.scene.images ? 3e6 : 0;  // the indicators' pictures
-  if (p.scene.frequencies || (p.kernel.features & AW_F_DIFFUSION)) b += (p.scene.images ? 3e6 : 0) + 64e3;  // pictures, diffusion.csv
+  if (p.kernel.features & (AW_F_FREQUENCIES | AW_F_DIFFUSION)) b += (p.scene.images ? 3e6 : 0) + 64e3;  // pictures, diffusion.csv
   if (p.scene.images) b += (p.scene.velocity_map ? 3 : 0) * 1.5e6 + (p.scene.zoom ? 1.5e6 : 0) + p.frames * 1.6e6;
   return b;
 }

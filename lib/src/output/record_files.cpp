@@ -72,11 +72,7 @@ void plan_attribute(H5Writer& h, hid_t where, const std::string& name, const Pla
     h.attr(where, "time", plan.start_time());
   else if (name == "time_end")
     h.attr(where, "time", plan.start_time() + plan.scene.duration);
-  else if (name == "frequency_window") {
-    h.attr(where, "samples", static_cast<std::int64_t>(plan.scene.frequency_samples));
-    h.attr(where, "every", plan.scene.frequency_every);
-    h.attr(where, "window_order", static_cast<std::int64_t>(plan.scene.frequency_window));
-  } else
+  else
     throw OutputError(name, "the output table names an attribute the writer does not know");
 }
 
@@ -87,7 +83,10 @@ void key_table_data(H5Writer& h, hid_t where, const RecordOutput& row, const Pla
     for (const detail::KeyData& d :
          t.data(t, plan.scene.output_values, detail::key_plan(plan.scene, plan), detail::params(plan).ints)) {
       if (!d.dataset) {
-        h.attr(where, d.name.c_str(), d.reals.at(0));
+        if (d.ints.empty())
+          h.attr(where, d.name.c_str(), d.reals.at(0));
+        else
+          h.attr(where, d.name.c_str(), d.ints.at(0));
         continue;
       }
       const hid_t set = d.ints.empty()

@@ -102,6 +102,71 @@ const KeyTable trajectory_keys = {
     fill_trajectories,
     trajectory_data};
 
+// observe.frequencies: the leading frequency of every angle over two windows of `samples` samples
+// `every` T apart, Laskar's window of order `window` (docs/frequencies.md)
+std::int64_t integer_value(const KeyTable& t, const KeyValues& v, const std::string& name) {
+  return static_cast<std::int64_t>(t.value(v, name)[0]);
+}
+
+KeyProblem check_frequencies(const KeyTable& t, const KeyValues& v, const KeyPlan& p) {
+  const std::int64_t samples = integer_value(t, v, "samples");
+  const double every = t.value(v, "every")[0];
+  if (static_cast<double>(p.segments / p.stride(t.sub("every"))) < 2.0 * static_cast<double>(samples))
+    return {t.sub("samples"), "two windows of " + p.count(static_cast<std::uint64_t>(samples)) + " samples every " +
+                                  p.number(every) + " T take " + p.number(2.0 * static_cast<double>(samples) * every) +
+                                  " T, and run.duration is " + p.number(p.duration) +
+                                  " T: choose fewer samples, a shorter interval or a longer run"};
+  if (p.slices > 1)
+    return {"run.slice",
+            "the frequency analysis keeps a window's samples on the device between time slices, which slices "
+            "do not carry: run observe.frequencies without run.slice"};
+  return {};
+}
+
+void fill_frequencies(const KeyTable& t, const KeyValues& v, const KeyPlan& p, IntParams& ip) {
+  ip.frequency_stride = p.stride(t.sub("every"));
+  if (!t.on(v)) return;
+  ip.frequency_samples = integer_value(t, v, "samples");
+  ip.frequency_order = integer_value(t, v, "window");
+  ip.series_reals = AW_FREQ_SERIES_REALS(ip.frequency_samples);  // both windows, the rates, a flag
+}
+
+void fill_frequency_reals(const KeyTable& t, const KeyValues& v, const KeyPlan&, RealParams& rp) {
+  rp.frequency_every = t.value(v, "every")[0];
+}
+
+// the windows, attributes of frequencies.h5
+std::vector<KeyData> frequency_data(const KeyTable& t, const KeyValues& v, const KeyPlan&, const IntParams&) {
+  return {{"samples", false, {}, {integer_value(t, v, "samples")}},
+          {"every", false, {t.value(v, "every")[0]}},
+          {"window_order", false, {}, {integer_value(t, v, "window")}}};
+}
+
+const KeyTable frequency_keys = {
+    "observe.frequencies", AW_F_FREQUENCIES, 0, "{ samples = n, every = T, window = p }, true or false",
+    "a table { samples = n, every = <T>, window = p }, true (the defaults) or false",
+    "Frequency map analysis (NAFF, docs/frequencies.md): the frequency of the largest term of every angle of "
+    "every trajectory over two consecutive windows of `samples` samples `every` T apart, from t = every on, and "
+    "the diffusion index (log10 of the norm of abs(nu(2)) - abs(nu(1))): frequencies.h5, frequency_map.png, "
+    "diffusion_index.png.",
+    {{"samples", TableSubKey::Kind::Integer, "16 to 65536", "an integer from 16 to 65536",
+      [](const std::vector<double>& x) { return x[0] >= 16 && x[0] <= 65536; },
+      "Samples per window (the two windows take 2 samples every T).", {512}},
+     {"every", TableSubKey::Kind::Real, "> 0, a multiple of integrator.step",
+      "a finite float greater than 0 (in units of T)", positive,
+      "Sample interval, in T. The shortest of the sample intervals (observe.energy_error.every, "
+      "observe.frequencies.every, observe.diffusion.every, observe.diffusion.average_every) divides run.average "
+      "and is a multiple of integrator.step; every other is a multiple of it.",
+      {0.1}, true},
+     {"window", TableSubKey::Kind::Integer, "0 to 4", "an integer from 0 to 4",
+      [](const std::vector<double>& x) { return x[0] >= 0 && x[0] <= 4; },
+      "Order p of Laskar's window chi_p (1: Hanning, frequency error ~ 1/T^4; 2: ~ 1/T^6; 0: none).", {1}}},
+    check_frequencies,
+    fill_frequencies,
+    frequency_data,
+    true,
+    fill_frequency_reals};
+
 // observe.diffusion: the actions every `every` T (each the mean over the last `average` T where it is > 0)
 double real_value(const KeyTable& t, const KeyValues& v, const std::string& name) { return t.value(v, name)[0]; }
 
@@ -262,9 +327,9 @@ const std::vector<RecordOutput>& record_outputs() {
          false, true}},
        "the leading frequency of every angle over two consecutive windows and the diffusion index "
        "(observe.frequencies, NAFF; docs/frequencies.md)",
-       {"duration", "frequency_window"},
+       {"duration"},
        {},
-       {},
+       {frequency_keys},
        nullptr,
        {"frequency_map", "diffusion_index"}},
       {"actions", AW_OUT_ACTIONS, AW_F_DIFFUSION,

@@ -119,6 +119,7 @@ struct KeyPlan {
   // segments between two samples of each sample interval (TableSubKey::interval), by
   // dotted sub-key ("observe.<name>.every"); 1 where it is not taken
   std::map<std::string, std::int64_t> strides = {};
+  std::int64_t segments = 0;  // segments of the whole run (run.duration / interval)
   std::int64_t stride(const std::string& key) const {
     const auto it = strides.find(key);
     return it == strides.end() ? 1 : it->second;
@@ -135,9 +136,9 @@ struct KeyProblem {
 // and the plan (the picked trajectories' ids and sample times).
 struct KeyData {
   std::string name;
-  bool dataset = false;  // a dataset (with `meaning`), else a scalar attribute of reals[0]
+  bool dataset = false;  // a dataset (with `meaning`), else a scalar attribute of reals[0] (of ints[0] if any)
   std::vector<double> reals = {};
-  std::vector<std::int64_t> ints = {};  // an integer dataset when not empty
+  std::vector<std::int64_t> ints = {};  // an integer dataset or attribute when not empty
   std::string meaning = {};
 };
 

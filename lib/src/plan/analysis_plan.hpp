@@ -1,9 +1,7 @@
-// arnoldweb: the planner's part for the analyses of trajectories over time
-// (docs/frequencies.md): the frequency analysis (observe.frequencies: two
-// windows of samples, their work memory), and the output table's table keys
-// (observe.trajectories, the actions' samples, ...: their rows' checks and
-// parameters): their checks against the schedule and their parameters in the
-// kernels' blocks.
+// arnoldweb: the planner's part for the output table's table keys
+// (observe.frequencies, observe.diffusion, observe.trajectories: their rows'
+// checks and parameters, lib/src/output_table/): their checks against the
+// schedule and their parameters in the kernels' blocks.
 #pragma once
 
 #include "arnoldweb/plan.hpp"

@@ -39,7 +39,6 @@ const std::vector<EffectRow>& effects() {
       {"time_reversal", AW_F_REVERSE, nullptr},
       // the output table's switches and table keys ask for their own bits as well (features_of)
       {"tangent", AW_F_TANGENT, nullptr},  // the indicators' switches need it
-      {"frequencies", AW_F_FREQUENCIES, [](const Scene& s) { return s.frequencies; }},
   }, {
       // states from a file (ensemble.initial = "file"); time slices add it when planned (plan.cpp)
       {"carry", AW_F_CARRY, [](const Scene& s) { return s.initial == "file"; }},

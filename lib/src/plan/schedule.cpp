@@ -88,7 +88,6 @@ void plan_schedule(const Scene& scene, Plan& p) {
   // frequencies', the actions'); every other is a whole number of segments.
   double unit = energy ? scene.energy_every : scene.average;
   std::string unit_key = energy ? "observe.energy_error.every" : "run.average";
-  if (scene.frequencies && scene.frequency_every < unit) unit = scene.frequency_every, unit_key = "observe.frequencies.every";
   const std::vector<std::pair<std::string, double>> intervals = table_intervals(scene);
   for (const auto& [key, every] : intervals)
     if (every < unit) unit = every, unit_key = key;
@@ -114,7 +113,6 @@ void plan_schedule(const Scene& scene, Plan& p) {
     return k;
   };
   p.energy_stride = energy ? stride(scene.energy_every, "observe.energy_error.every") : 1;
-  p.frequency_stride = scene.frequencies ? stride(scene.frequency_every, "observe.frequencies.every") : 1;
   p.strides.clear();
   for (const auto& [key, every] : intervals) p.strides[key] = stride(every, key.c_str());
   p.steps_per_trajectory = p.windows * per_window;

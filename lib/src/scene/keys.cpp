@@ -661,36 +661,6 @@ void output_table_keys(Rows& add) {
   }
 }
 
-void analysis_keys(Rows& add) {
-  add("observe.frequencies", "table or boolean", "{ samples = n, every = T, window = p }, true or false",
-      "a table { samples = n, every = <T>, window = p }, true (the defaults) or false",
-      [](const Scene& s) {
-        return s.frequencies ? "{ samples = " + std::to_string(s.frequency_samples) + ", every = " +
-                                   toml_double(s.frequency_every) + ", window = " +
-                                   std::to_string(s.frequency_window) + " }"
-                             : boolean(false);
-      },
-      switch_into(&Scene::frequencies, true),
-      "Frequency map analysis (NAFF, docs/frequencies.md): the frequency of the largest term of every angle of "
-      "every trajectory over two consecutive windows of `samples` samples `every` T apart, from t = every on, and "
-      "the diffusion index (log10 of the norm of abs(nu(2)) - abs(nu(1))): frequencies.h5, frequency_map.png, "
-      "diffusion_index.png.",
-      Shape::Composite);
-  add("observe.frequencies.samples", "integer", "16 to 65536", "an integer from 16 to 65536",
-      integer_of(&Scene::frequency_samples),
-      integer_into(&Scene::frequency_samples, [](std::int64_t v) { return v >= 16 && v <= 65536; }),
-      "Samples per window (the two windows take 2 samples every T).");
-  add("observe.frequencies.every", "float", "> 0, a multiple of integrator.step",
-      "a finite float greater than 0 (in units of T)", real_of(&Scene::frequency_every),
-      real_into(&Scene::frequency_every, positive),
-      "Sample interval, in T. The shortest of the sample intervals (observe.energy_error.every, "
-      "observe.frequencies.every, observe.diffusion.every, observe.diffusion.average_every) divides run.average "
-      "and is a multiple of integrator.step; every other is a multiple of it.");
-  add("observe.frequencies.window", "integer", "0 to 4", "an integer from 0 to 4", integer_of(&Scene::frequency_window),
-      integer_into(&Scene::frequency_window, [](std::int64_t v) { return v >= 0 && v <= 4; }),
-      "Order p of Laskar's window chi_p (1: Hanning, frequency error ~ 1/T^4; 2: ~ 1/T^6; 0: none).");
-}
-
 void output_keys(Rows& add) {
   add("output.dir", "string", "non-empty path without NUL", "a non-empty string without NUL characters (a directory path)",
       text_of(&Scene::output_dir),
@@ -834,7 +804,6 @@ std::vector<KeySpec> build() {
   indicator_keys(rows);
   output_switch_keys(rows);
   tangent_key(rows);
-  analysis_keys(rows);
   output_table_keys(rows);
   output_keys(rows);
   panel_keys(rows);
