@@ -18,6 +18,11 @@
 // A FIFO, fifo.h5, lies beside them: the seeds whose map.h5 leads out of the
 // file (an external link, external storage, a virtual dataset) name it.
 //
+// HDF5 reads map.h5 in a child process (lib/src/os/isolated.hpp), as for every user: a
+// crash of HDF5 1.10.8 on damaged metadata is then a SavedRunError ("HDF5 could not read it"),
+// an expected outcome. With ARNOLDWEB_HDF5_IN_PROCESS=1 (check-fuzz.sh --long) it reads here,
+// the fuzzer sees the reader's coverage, and such a crash is a finding.
+//
 // Expected outcomes: the maps, or an arnoldweb::Error with a message.
 // Findings: any other exception, a crash, a hang, a sanitizer report, an
 // HDF5 object left open.

@@ -338,6 +338,43 @@ TEST_SUITE("reliability") {
     }
   }
 
+  TEST_CASE("14. a map.h5 on which HDF5 itself crashes is refused naming it; the reader's process goes on") {
+    // tests/fuzz/hdf5-defects/local-heap-null-read: HDF5 1.10.8 reads through a null pointer at the
+    // first lookup of a name (SIGSEGV: render and compare ended with exit 139 before HDF5 was read
+    // in a child process, os/isolated.hpp)
+    const std::string dir = awtest::temp_dir("map-crash");
+    const std::string a = saved_run(dir, "a", 1), b = saved_run(dir, "b", 2);
+    const std::string defect = std::string(ARNOLDWEB_SOURCE_DIR) + "/tests/fuzz/hdf5-defects/local-heap-null-read";
+    for (const bool older : {false, true}) {
+      CAPTURE(older);
+      const std::string bad = copy_of(a, "bad");
+      fs::remove(bad + "/map.h5");
+      fs::copy_file(defect, bad + "/map.h5");
+      json j = summary_of(bad);
+      if (older) {
+        j.erase("file_digests");
+      } else {
+        const std::string bytes = slurp(bad + "/map.h5");
+        j["file_digests"]["map.h5"] = {{"bytes", bytes.size()}, {"xxh3_128", hex128(bytes)}};
+      }
+      write_summary(bad, j);
+      both_refuse(bad, b, bad + "/map.h5: HDF5 could not read it: its reader (a child process) killed by signal");
+      // in this process (Python's reader): an error to catch, not the end of the session
+      CHECK_THROWS_WITH_AS(arnoldweb::read_saved_maps(bad), doctest::Contains("HDF5 could not read it"),
+                           arnoldweb::SavedRunError);
+    }
+    // the file handed to h5py (arnoldweb.load): walked whole in a child too
+    const std::string bad = copy_of(a, "bad-load");
+    fs::copy_file(defect, bad + "/extra.h5");
+    const std::string bytes = slurp(bad + "/extra.h5");
+    json j = summary_of(bad);
+    j["file_digests"]["extra.h5"] = {{"bytes", bytes.size()}, {"xxh3_128", hex128(bytes)}};
+    write_summary(bad, j);
+    CHECK_THROWS_WITH_AS(arnoldweb::read_saved_hdf5_file(bad, "extra.h5"), doctest::Contains("extra.h5: HDF5 could not read it"),
+                         arnoldweb::SavedRunError);
+    CHECK(arnoldweb::read_saved_maps(a).map.size() == 12 * 8 * 8);  // and the good one still reads
+  }
+
   TEST_CASE("13. the HDF5 files that arnoldweb.load hands to h5py are checked by the same policy") {
     const std::string dir = awtest::temp_dir("load-out");
     const std::string scene = dir + "/scene.toml";

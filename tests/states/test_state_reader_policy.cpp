@@ -169,6 +169,31 @@ TEST_SUITE("states") {
                                "HDF5 1.10.8 would take memory for ever reading it (a damaged file)"));
   }
 
+  TEST_CASE("1. a damaged symbol table on which HDF5 1.10.8 reads through a null pointer: refused, not a crash") {
+    // tests/fuzz/hdf5-defects/local-heap-null-read: a SIGSEGV in H5F__accum_read at the first lookup
+    // of a name; `check` ended with exit 139 before HDF5 read state files in a child process
+    const std::string dir = awtest::temp_dir("states-null-read");
+    const std::string path = dir + "/null.h5";
+    fs::copy_file(std::string(ARNOLDWEB_SOURCE_DIR) + "/tests/fuzz/hdf5-defects/local-heap-null-read", path);
+    std::string out;
+    CHECK(check_within(dir, path, 60, &out) == 2);
+    CAPTURE(out);
+    CHECK(contains(out, path + ": HDF5 could not read it: its reader (a child process) killed by signal 11"));
+    // the library's caller (Python) gets an error to catch, and goes on
+    CHECK_THROWS_WITH_AS(read_state_file(path), doctest::Contains("HDF5 could not read it"), arnoldweb::StateError);
+    const States good = simple_states(8);
+    {
+      awtest::H5TestFile f(dir + "/good.h5");
+      f.reals("position_turns", good.x);
+      f.reals("momentum", good.p);
+    }
+    const arnoldweb::StateSet read = read_state_file(dir + "/good.h5");  // read in a child, handed back whole
+    CHECK(read.count == 8);
+    CHECK(read.momentum == good.p);
+    CHECK(read.status == std::vector<std::int64_t>(8, 0));
+    CHECK(read.source == dir + "/good.h5");
+  }
+
   TEST_CASE("2. every dataset's row count is compared with the others, before anything is read") {
     const std::string dir = awtest::temp_dir("states-rows");
     const States s = simple_states(4), twice = simple_states(8);

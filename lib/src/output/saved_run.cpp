@@ -5,13 +5,17 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstring>
 #include <filesystem>
+#include <stdexcept>
 
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/output.hpp"
 #include "arnoldweb/scene.hpp"
 #include "aw_params.h"
+#include "os/isolated.hpp"
 #include "os/regular_file.hpp"
 #include "output/file_digest.hpp"
 #include "output/h5_reader.hpp"
@@ -122,6 +126,69 @@ H5Fail saved_run_error(const std::string& path) {
   return [path](const std::string& object, const std::string& message) {
     throw SavedRunError(path, object.empty() ? message : object + " " + message);
   };
+}
+
+// map.h5's maps from its bytes (checked against their digest), each checked against the
+// shape summary.json declares for it ("maps"): r.map, r.frames, r.zoom. Runs in the child.
+void read_map_bytes(std::string bytes, const std::string& path, std::uint64_t nside, std::uint64_t frames,
+                    std::uint64_t zoom, Result& r) {
+  const H5File f(bytes, path, saved_run_error(path));  // the bytes that were checked are the bytes read
+  const hsize_t npix = 12 * nside * nside;
+  const std::string declared_nside = "maps.nside = " + std::to_string(nside);
+  // no velocity map: the dataset map is empty (a run with a zoom) or absent
+  const bool no_map = nside == 0 && dims_of(f, "map", path).empty();
+  r.map = no_map ? std::vector<std::uint64_t>() : read_counts(f, "map", {npix}, path, declared_nside);
+  if (npix && nside_attribute(f, path) != static_cast<std::int64_t>(nside))
+    throw SavedRunError(path, "the dataset map says nside " + std::to_string(nside_attribute(f, path)) +
+                                  ", but " + declared_nside + " (summary.json)");
+  r.frames.clear();
+  if (!dims_of(f, "frames", path).empty() || frames > 1) {
+    const auto all = read_counts(f, "frames", {frames, npix}, path,
+                                 "maps.frames = " + std::to_string(frames) + " and " + declared_nside);
+    for (std::size_t k = 0; k < frames; ++k)
+      r.frames.emplace_back(all.begin() + static_cast<std::ptrdiff_t>(k * npix),
+                            all.begin() + static_cast<std::ptrdiff_t>((k + 1) * npix));
+  }
+  r.zoom.clear();
+  if (!dims_of(f, "zoom", path).empty() || zoom > 0)
+    r.zoom = read_counts(f, "zoom", {zoom, zoom}, path, "maps.zoom_resolution = " + std::to_string(zoom));
+}
+
+// How long HDF5 may take over one file in the child (a map of nside 8192 reads in seconds).
+constexpr int kIsolatedSeconds = 120;
+
+std::string hdf5_died(const std::string& why) {
+  return "HDF5 could not read it: its reader (a child process) " + why +
+         " (a damaged file: HDF5 1.10.8 fails on some damaged metadata; docs/reliability.md, \"Reading HDF5 "
+         "files\")";
+}
+
+// The child's answer: the maps (Packer), after the tag.
+std::string pack_maps(const Result& r) {
+  detail::Packer p;
+  p.put(r.map).put<std::uint64_t>(r.frames.size());
+  for (const auto& f : r.frames) p.put(f);
+  p.put(r.zoom);
+  return p.bytes;
+}
+void unpack_maps(const std::string& in, Result& r) {
+  detail::Unpacker u(in, 1);
+  r.map = u.array<std::uint64_t>();
+  const auto frames = u.get<std::uint64_t>();
+  r.frames.clear();
+  for (std::uint64_t k = 0; k < frames; ++k) r.frames.push_back(u.array<std::uint64_t>());
+  r.zoom = u.array<std::uint64_t>();
+}
+// A refusal in the child: the file it names, then its message.
+std::string pack_error(const SavedRunError& e) {
+  const std::string what = e.what();
+  const std::size_t skip = e.path().empty() ? 0 : e.path().size() + 2;
+  return detail::Packer().put(e.path()).put(what.substr(std::min(skip, what.size()))).bytes;
+}
+[[noreturn]] void unpack_error(const std::string& in) {
+  detail::Unpacker u(in, 1);
+  std::string path = u.text();
+  throw SavedRunError(path, u.text());
 }
 
 }  // namespace
@@ -288,29 +355,24 @@ int read_saved_map_h5(const SavedDir& saved, Result& r) {
     throw SavedRunError(saved.summary_path(), "maps.zoom_resolution = " + std::to_string(zoom) + " (at most " +
                                                   std::to_string(kMaxZoom) + ")");
   const std::string path = saved.path("map.h5");
-  std::string bytes = saved.read("map.h5", "the run made neither a velocity map nor a zoom "
-                                           "(observe.velocity_map, observe.zoom)");
-  const H5File f(bytes, path, saved_run_error(path));  // the bytes that were checked are the bytes read
-  const hsize_t npix = 12 * nside * nside;
-  const std::string declared_nside = "maps.nside = " + std::to_string(nside);
-  // no velocity map: the dataset map is empty (a run with a zoom) or absent
-  const bool no_map = nside == 0 && dims_of(f, "map", path).empty();
-  r.map = no_map ? std::vector<std::uint64_t>() : read_counts(f, "map", {npix}, path, declared_nside);
-  if (npix && nside_attribute(f, path) != static_cast<std::int64_t>(nside))
-    throw SavedRunError(path, "the dataset map says nside " + std::to_string(nside_attribute(f, path)) +
-                                  ", but " + declared_nside + " (summary.json)");
+  const std::string bytes = saved.read("map.h5", "the run made neither a velocity map nor a zoom "
+                                                 "(observe.velocity_map, observe.zoom)");
+  // HDF5 reads the bytes in a child process (os/isolated.hpp): a defect of its parser ends
+  // the child, and is a refusal naming the file here
+  const std::string answer = run_isolated(
+      [&] {
+        try {
+          Result m;
+          read_map_bytes(bytes, path, nside, frames, zoom, m);
+          return "M" + pack_maps(m);
+        } catch (const SavedRunError& e) {
+          return "E" + pack_error(e);
+        }
+      },
+      [&](const std::string& why) { throw SavedRunError(path, hdf5_died(why)); }, kIsolatedSeconds);
+  if (answer[0] == 'E') unpack_error(answer);
+  unpack_maps(answer, r);
   r.nside = static_cast<int>(nside);
-  r.frames.clear();
-  if (!dims_of(f, "frames", path).empty() || frames > 1) {
-    const auto all = read_counts(f, "frames", {frames, npix}, path,
-                                 "maps.frames = " + std::to_string(frames) + " and " + declared_nside);
-    for (std::size_t k = 0; k < frames; ++k)
-      r.frames.emplace_back(all.begin() + static_cast<std::ptrdiff_t>(k * npix),
-                            all.begin() + static_cast<std::ptrdiff_t>((k + 1) * npix));
-  }
-  r.zoom.clear();
-  if (!dims_of(f, "zoom", path).empty() || zoom > 0)
-    r.zoom = read_counts(f, "zoom", {zoom, zoom}, path, "maps.zoom_resolution = " + std::to_string(zoom));
   return static_cast<int>(zoom);
 }
 
@@ -378,7 +440,19 @@ std::string read_saved_hdf5_file(const std::string& dir, const std::string& name
   const detail::SavedDir saved(dir);
   std::string bytes = saved.read(name);
   const std::string path = saved.path(name);
-  detail::H5File(bytes, path, saved_run_error(path)).check_every_link();  // h5py iterates: all of it, first
+  // h5py iterates: all of it, first, in a child (os/isolated.hpp)
+  const std::string answer = detail::run_isolated(
+      [&] {
+        try {
+          std::string copy = bytes;
+          detail::H5File(copy, path, saved_run_error(path)).check_every_link();
+          return std::string("K");
+        } catch (const SavedRunError& e) {
+          return "E" + pack_error(e);
+        }
+      },
+      [&](const std::string& why) { throw SavedRunError(path, hdf5_died(why)); }, kIsolatedSeconds);
+  if (answer[0] == 'E') unpack_error(answer);
   return bytes;
 }
 
