@@ -1,4 +1,4 @@
-// arnoldweb: work on untrusted bytes in a child process (isolated.hpp).
+// arnoldweb: work on untrusted bytes tried first in a child process (isolated.hpp).
 #include "os/isolated.hpp"
 
 #include <fcntl.h>
@@ -7,38 +7,19 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
-#include <algorithm>
-#include <exception>
 #include <stdexcept>
 
 namespace arnoldweb::detail {
 namespace {
 
-bool write_all(int fd, const std::string& s) {
-  for (std::size_t done = 0; done < s.size();) {
-    const ssize_t n = ::write(fd, s.data() + done, s.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
-// The child's answer: 'O' and what work returned, or 'X' and an exception's what().
-[[noreturn]] void child(int fd, const std::function<std::string()>& work) {
-  std::string answer;
-  try {
-    answer = "O" + work();
-  } catch (const std::exception& e) {
-    answer = std::string("X") + e.what();
-  } catch (...) {
-    answer = "Xan exception of a type not derived from std::exception";
-  }
-  ::_exit(write_all(fd, answer) ? 0 : 1);  // _exit: nothing of the parent's is flushed or destroyed twice
+bool in_process() {
+  const char* v = std::getenv("ARNOLDWEB_HDF5_IN_PROCESS");
+  return v && std::string(v) == "1";
 }
 
 std::string why_ended(int status) {
@@ -47,35 +28,37 @@ std::string why_ended(int status) {
     const char* name = ::strsignal(sig);
     return "killed by signal " + std::to_string(sig) + (name ? std::string(" (") + name + ")" : std::string());
   }
-  return "ended with exit status " + std::to_string(WEXITSTATUS(status)) + " before it answered";
+  return "ended with exit status " + std::to_string(WEXITSTATUS(status));
 }
 
 }  // namespace
 
-bool isolating() {
-  const char* v = std::getenv("ARNOLDWEB_HDF5_IN_PROCESS");
-  return !(v && std::string(v) == "1");
+int seconds_for(std::uint64_t bytes) {
+  return static_cast<int>(std::min<std::uint64_t>(120 + bytes / 50'000'000, 86400));
 }
 
-std::string run_isolated(const std::function<std::string()>& work, const std::function<void(const std::string&)>& died,
-                         int seconds) {
-  int fds[2] = {-1, -1};
-  if (!isolating() || ::pipe2(fds, O_CLOEXEC) != 0) return work();
+void try_in_child(const std::function<void()>& work, const std::function<void(const std::string&)>& died,
+                  int seconds) {
+  if (in_process()) return;
+  int fds[2] = {-1, -1};  // the child's end closes when it ends: the parent waits on the pipe
+  if (::pipe2(fds, O_CLOEXEC) != 0) return;
   const pid_t pid = ::fork();
   if (pid < 0) {
     ::close(fds[0]);
     ::close(fds[1]);
-    return work();
+    return;
   }
   if (pid == 0) {
     ::close(fds[0]);
-    child(fds[1], work);
+    try {
+      work();
+    } catch (...) {  // the parent's own try will throw it
+    }
+    ::_exit(0);  // _exit: nothing of the parent's is flushed or destroyed twice
   }
   ::close(fds[1]);
-  std::string answer;
   bool timed_out = false;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
-  char buf[1 << 16];
   for (;;) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) {
@@ -84,23 +67,23 @@ std::string run_isolated(const std::function<std::string()>& work, const std::fu
     }
     pollfd p{fds[0], POLLIN, 0};
     const int ready = ::poll(&p, 1, static_cast<int>(std::min<long long>(left.count(), 1000)));
-    if (ready < 0 && errno == EINTR) continue;
+    if (ready < 0 && errno != EINTR) break;
     if (ready <= 0) continue;
-    const ssize_t n = ::read(fds[0], buf, sizeof buf);
+    char c;
+    const ssize_t n = ::read(fds[0], &c, 1);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;  // the child closed its end: it has answered, or ended
-    answer.append(buf, static_cast<std::size_t>(n));
+    break;  // 0: the child has ended (it writes nothing)
   }
   ::close(fds[0]);
   if (timed_out) ::kill(pid, SIGKILL);
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  while (::waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) return;  // not ours to wait for (SIGCHLD ignored): nothing known against it
   }
-  if (timed_out) died("did not answer within " + std::to_string(seconds) + " s (stopped)");
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || answer.empty()) died(why_ended(status));
-  if (timed_out || answer.empty()) throw std::logic_error("run_isolated: `died` returned");
-  if (answer[0] == 'X') throw std::runtime_error(answer.substr(1));
-  return answer.substr(1);
+  if (timed_out) died("did not finish within " + std::to_string(seconds) + " s (stopped)");
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) died(why_ended(status));
+  if (timed_out || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::logic_error("try_in_child: `died` returned");
 }
 
 }  // namespace arnoldweb::detail

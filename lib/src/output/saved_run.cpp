@@ -5,11 +5,9 @@
 
 #include <hdf5.h>
 
-#include <algorithm>
 #include <cerrno>
-#include <cstring>
 #include <filesystem>
-#include <stdexcept>
+#include <functional>
 
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/output.hpp"
@@ -129,8 +127,8 @@ H5Fail saved_run_error(const std::string& path) {
 }
 
 // map.h5's maps from its bytes (checked against their digest), each checked against the
-// shape summary.json declares for it ("maps"): r.map, r.frames, r.zoom. Runs in the child.
-void read_map_bytes(std::string bytes, const std::string& path, std::uint64_t nside, std::uint64_t frames,
+// shape summary.json declares for it ("maps"): r.map, r.frames, r.zoom.
+void read_map_bytes(std::string& bytes, const std::string& path, std::uint64_t nside, std::uint64_t frames,
                     std::uint64_t zoom, Result& r) {
   const H5File f(bytes, path, saved_run_error(path));  // the bytes that were checked are the bytes read
   const hsize_t npix = 12 * nside * nside;
@@ -154,41 +152,17 @@ void read_map_bytes(std::string bytes, const std::string& path, std::uint64_t ns
     r.zoom = read_counts(f, "zoom", {zoom, zoom}, path, "maps.zoom_resolution = " + std::to_string(zoom));
 }
 
-// How long HDF5 may take over one file in the child (a map of nside 8192 reads in seconds).
-constexpr int kIsolatedSeconds = 120;
-
-std::string hdf5_died(const std::string& why) {
-  return "HDF5 could not read it: its reader (a child process) " + why +
-         " (a damaged file: HDF5 1.10.8 fails on some damaged metadata; docs/reliability.md, \"Reading HDF5 "
-         "files\")";
-}
-
-// The child's answer: the maps (Packer), after the tag.
-std::string pack_maps(const Result& r) {
-  detail::Packer p;
-  p.put(r.map).put<std::uint64_t>(r.frames.size());
-  for (const auto& f : r.frames) p.put(f);
-  p.put(r.zoom);
-  return p.bytes;
-}
-void unpack_maps(const std::string& in, Result& r) {
-  detail::Unpacker u(in, 1);
-  r.map = u.array<std::uint64_t>();
-  const auto frames = u.get<std::uint64_t>();
-  r.frames.clear();
-  for (std::uint64_t k = 0; k < frames; ++k) r.frames.push_back(u.array<std::uint64_t>());
-  r.zoom = u.array<std::uint64_t>();
-}
-// A refusal in the child: the file it names, then its message.
-std::string pack_error(const SavedRunError& e) {
-  const std::string what = e.what();
-  const std::size_t skip = e.path().empty() ? 0 : e.path().size() + 2;
-  return detail::Packer().put(e.path()).put(what.substr(std::min(skip, what.size()))).bytes;
-}
-[[noreturn]] void unpack_error(const std::string& in) {
-  detail::Unpacker u(in, 1);
-  std::string path = u.text();
-  throw SavedRunError(path, u.text());
+// HDF5 reads `bytes` first in a child process (os/isolated.hpp): a defect of its parser ends
+// the child, and is a refusal naming the file here. `read` is what is then done here.
+void try_hdf5_in_child(const std::string& bytes, const std::string& path, const std::function<void()>& read) {
+  detail::try_in_child(
+      read,
+      [&](const std::string& why) {
+        throw SavedRunError(path, "HDF5 could not read it: its reader (a child process) " + why +
+                                      " (a damaged file: HDF5 1.10.8 fails on some damaged metadata; "
+                                      "docs/reliability.md, \"Reading HDF5 files\")");
+      },
+      detail::seconds_for(bytes.size()));
 }
 
 }  // namespace
@@ -355,23 +329,11 @@ int read_saved_map_h5(const SavedDir& saved, Result& r) {
     throw SavedRunError(saved.summary_path(), "maps.zoom_resolution = " + std::to_string(zoom) + " (at most " +
                                                   std::to_string(kMaxZoom) + ")");
   const std::string path = saved.path("map.h5");
-  const std::string bytes = saved.read("map.h5", "the run made neither a velocity map nor a zoom "
-                                                 "(observe.velocity_map, observe.zoom)");
-  // HDF5 reads the bytes in a child process (os/isolated.hpp): a defect of its parser ends
-  // the child, and is a refusal naming the file here
-  const std::string answer = run_isolated(
-      [&] {
-        try {
-          Result m;
-          read_map_bytes(bytes, path, nside, frames, zoom, m);
-          return "M" + pack_maps(m);
-        } catch (const SavedRunError& e) {
-          return "E" + pack_error(e);
-        }
-      },
-      [&](const std::string& why) { throw SavedRunError(path, hdf5_died(why)); }, kIsolatedSeconds);
-  if (answer[0] == 'E') unpack_error(answer);
-  unpack_maps(answer, r);
+  std::string bytes = saved.read("map.h5", "the run made neither a velocity map nor a zoom "
+                                           "(observe.velocity_map, observe.zoom)");
+  const auto read = [&] { read_map_bytes(bytes, path, nside, frames, zoom, r); };
+  try_hdf5_in_child(bytes, path, read);
+  read();
   r.nside = static_cast<int>(nside);
   return static_cast<int>(zoom);
 }
@@ -440,19 +402,10 @@ std::string read_saved_hdf5_file(const std::string& dir, const std::string& name
   const detail::SavedDir saved(dir);
   std::string bytes = saved.read(name);
   const std::string path = saved.path(name);
-  // h5py iterates: all of it, first, in a child (os/isolated.hpp)
-  const std::string answer = detail::run_isolated(
-      [&] {
-        try {
-          std::string copy = bytes;
-          detail::H5File(copy, path, saved_run_error(path)).check_every_link();
-          return std::string("K");
-        } catch (const SavedRunError& e) {
-          return "E" + pack_error(e);
-        }
-      },
-      [&](const std::string& why) { throw SavedRunError(path, hdf5_died(why)); }, kIsolatedSeconds);
-  if (answer[0] == 'E') unpack_error(answer);
+  // h5py iterates: all of it, first (in a child, then here)
+  const auto walk = [&] { detail::H5File(bytes, path, saved_run_error(path)).check_every_link(); };
+  try_hdf5_in_child(bytes, path, walk);
+  walk();
   return bytes;
 }
 

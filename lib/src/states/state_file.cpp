@@ -161,11 +161,7 @@ void check_file(const std::string& path, const detail::OpenPlainFile& plain) {
     throw StateError(path, "", -1, "not an HDF5 file (docs/outputs.md, \"State files\")");
 }
 
-}  // namespace
-
-namespace {
-
-// The states of the open, checked file (in the child of read_state_file).
+// The states of the open, checked file (read_state_file reads them in a child, then here).
 StateSet read_states(const std::string& path, const detail::OpenPlainFile& plain) {
   const StateFile f(path, plain);
   StateSet s;
@@ -217,68 +213,24 @@ StateSet read_states(const std::string& path, const detail::OpenPlainFile& plain
   return s;
 }
 
-// The child's answer (os/isolated.hpp): 'S' and the states, or 'E' and a StateError's fields.
-std::string pack_states(const StateSet& s) {
-  return "S" + detail::Packer()
-                   .put(s.source)
-                   .put(s.group)
-                   .put(s.count)
-                   .put(s.position_turns)
-                   .put(s.winding)
-                   .put(s.momentum)
-                   .put(s.status)
-                   .put(s.has_time)
-                   .put(s.time)
-                   .bytes;
-}
-StateSet unpack_states(const std::string& in) {
-  detail::Unpacker u(in, 1);
-  StateSet s;
-  s.source = u.text();
-  s.group = u.text();
-  s.count = u.get<std::uint64_t>();
-  s.position_turns = u.array<double>();
-  s.winding = u.array<std::int64_t>();
-  s.momentum = u.array<double>();
-  s.status = u.array<std::int64_t>();
-  s.has_time = u.get<bool>();
-  s.time = u.get<double>();
-  return s;
-}
-std::string pack_error(const StateError& e) {
-  return "E" + detail::Packer().put(e.source()).put(e.dataset()).put(e.row()).put(e.message()).bytes;
-}
-[[noreturn]] void unpack_error(const std::string& in) {
-  detail::Unpacker u(in, 1);
-  std::string source = u.text(), dataset = u.text();
-  const auto row = u.get<std::int64_t>();
-  throw StateError(source, dataset, row, u.text());
-}
-
 }  // namespace
 
 StateSet read_state_file(const std::string& path) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions, not prints
   const detail::OpenPlainFile plain(path);
   check_file(path, plain);
-  // HDF5 reads the file in a child process (os/isolated.hpp): a defect of its parser
+  // HDF5 reads the file first in a child process (os/isolated.hpp): a defect of its parser
   // (tests/fuzz/hdf5-defects/) ends the child, and is a refusal naming the file here
-  const std::string answer = detail::run_isolated(
-      [&] {
-        try {
-          return pack_states(read_states(path, plain));
-        } catch (const StateError& e) {
-          return pack_error(e);
-        }
-      },
+  detail::try_in_child(
+      [&] { read_states(path, plain); },
       [&](const std::string& why) {
         throw StateError(path, "", -1,
                          "HDF5 could not read it: its reader (a child process) " + why +
                              " (a damaged file: HDF5 1.10.8 fails on some damaged metadata; docs/reliability.md, "
                              "\"Reading HDF5 files\")");
-      });
-  if (answer[0] == 'E') unpack_error(answer);
-  return unpack_states(answer);
+      },
+      detail::seconds_for(plain.size()));
+  return read_states(path, plain);
 }
 
 }  // namespace arnoldweb
