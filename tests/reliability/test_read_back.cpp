@@ -93,6 +93,23 @@ std::string hex128(const std::string& bytes) {
   return buf;
 }
 
+// A copy of the saved run `a` ("bad") whose map.h5 `write` makes, with its digest recorded in
+// summary.json (as a copied directory would have it), or, `older`, without file_digests.
+std::string with_map(const std::string& a, bool older, const std::function<void(const std::string&)>& write) {
+  const std::string bad = copy_of(a, "bad");
+  fs::remove(bad + "/map.h5");
+  write(bad + "/map.h5");
+  json j = summary_of(bad);
+  if (older) {
+    j.erase("file_digests");
+  } else {
+    const std::string bytes = slurp(bad + "/map.h5");
+    j["file_digests"]["map.h5"] = {{"bytes", bytes.size()}, {"xxh3_128", hex128(bytes)}};
+  }
+  write_summary(bad, j);
+  return bad;
+}
+
 // Every file under `dir` but summary.json is in its file_digests with its
 // size and the XXH3-128 of its bytes, and nothing else is.
 void digests_match(const std::string& dir) {
@@ -319,20 +336,10 @@ TEST_SUITE("reliability") {
       // with a summary.json that records the crafted file's digest, and an older one without digests
       for (const bool older : {false, true}) {
         CAPTURE(older);
-        const std::string bad = copy_of(a, "bad");
-        fs::remove(bad + "/map.h5");
-        {
-          awtest::H5TestFile f(bad + "/map.h5");
+        const std::string bad = with_map(a, older, [&](const std::string& map) {
+          awtest::H5TestFile f(map);
           c.write(f);
-        }
-        json j = summary_of(bad);
-        if (older) {
-          j.erase("file_digests");
-        } else {
-          const std::string bytes = slurp(bad + "/map.h5");
-          j["file_digests"]["map.h5"] = {{"bytes", bytes.size()}, {"xxh3_128", hex128(bytes)}};
-        }
-        write_summary(bad, j);
+        });
         both_refuse(bad, b, bad + "/map.h5: " + c.says);  // blocked for ever on the FIFO before (or read fill values)
       }
     }
@@ -347,17 +354,7 @@ TEST_SUITE("reliability") {
     const std::string defect = std::string(ARNOLDWEB_SOURCE_DIR) + "/tests/fuzz/hdf5-defects/local-heap-null-read";
     for (const bool older : {false, true}) {
       CAPTURE(older);
-      const std::string bad = copy_of(a, "bad");
-      fs::remove(bad + "/map.h5");
-      fs::copy_file(defect, bad + "/map.h5");
-      json j = summary_of(bad);
-      if (older) {
-        j.erase("file_digests");
-      } else {
-        const std::string bytes = slurp(bad + "/map.h5");
-        j["file_digests"]["map.h5"] = {{"bytes", bytes.size()}, {"xxh3_128", hex128(bytes)}};
-      }
-      write_summary(bad, j);
+      const std::string bad = with_map(a, older, [&](const std::string& map) { fs::copy_file(defect, map); });
       both_refuse(bad, b, bad + "/map.h5: HDF5 could not read it: its reader (a child process) killed by signal");
       // in this process (Python's reader): an error to catch, not the end of the session
       CHECK_THROWS_WITH_AS(arnoldweb::read_saved_maps(bad), doctest::Contains("HDF5 could not read it"),
