@@ -4,6 +4,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -50,6 +51,8 @@ void try_in_child(const std::function<void()>& work, const std::function<void(co
   }
   if (pid == 0) {
     ::close(fds[0]);
+    const rlimit no_core{0, 0};  // a crash of the child leaves no core file behind
+    ::setrlimit(RLIMIT_CORE, &no_core);
     try {
       work();
     } catch (...) {  // the parent's own try will throw it
