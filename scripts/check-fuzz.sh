@@ -49,15 +49,14 @@ build_dir="${ARNOLDWEB_ASAN_BUILD_DIR:-build-asan}"
 
 seconds="${ARNOLDWEB_FUZZ_SECONDS:-60}"
 runs="${ARNOLDWEB_FUZZ_RUNS:--1}"
-long=0
+long=0 seed="${ARNOLDWEB_FUZZ_SEED:-20261129}"
 for arg in "$@"; do
   case "$arg" in
-    --long) seconds=3600 long=1 ;;
+    --long) seconds=3600 long=1 seed="${ARNOLDWEB_FUZZ_SEED:-0}" ;;
     *) echo "usage: $0 [--long]" >&2; exit 2 ;;
   esac
 done
 [ "$runs" != "-1" ] && seconds=0  # a fixed number of inputs, however long
-if [ "$long" = 1 ]; then seed="${ARNOLDWEB_FUZZ_SEED:-0}"; else seed="${ARNOLDWEB_FUZZ_SEED:-20261129}"; fi
 
 targets="${ARNOLDWEB_FUZZ_TARGETS:-scene saved states}"
 rc=0
@@ -84,7 +83,8 @@ rm -rf "$artifacts"
 mkdir -p "$artifacts"
 
 # fuzz NAME FUZZER DICT MAX_LEN SEED_DIR...: one target for the bound; 0 if no finding.
-# $asan_extra, $lsan_options and $fuzz_flags add sanitizer and libFuzzer options.
+# $asan_extra, $lsan_options and $fuzz_flags add sanitizer and libFuzzer options; $in_process (1 or 0)
+# is ARNOLDWEB_HDF5_IN_PROCESS.
 fuzz() {
   local name="$1" fuzzer="$2" dict="$3" max_len="$4"
   shift 4
@@ -102,7 +102,7 @@ fuzz() {
   # -error_exitcode/-timeout_exitcode: libFuzzer's default 77 would read as "skipped"
   ASAN_OPTIONS="${ASAN_OPTIONS:-}:halt_on_error=1:detect_leaks=1:detect_stack_use_after_return=1$asan_extra" \
   LSAN_OPTIONS="${LSAN_OPTIONS:-}$lsan_options" \
-  UBSAN_OPTIONS="${UBSAN_OPTIONS:-}:halt_on_error=1:print_stacktrace=1" \
+  UBSAN_OPTIONS="${UBSAN_OPTIONS:-}:halt_on_error=1:print_stacktrace=1" ARNOLDWEB_HDF5_IN_PROCESS="$in_process" \
   "$fuzzer" "$corpus" "$@" \
     -dict="$dict" -max_len="$max_len" -timeout=10 -rss_limit_mb=2048 $fuzz_flags \
     -max_total_time="$seconds" -runs="$runs" -seed="$seed" \
@@ -135,7 +135,7 @@ failed=0
 for t in $targets; do
   case "$t" in
     scene)
-      asan_extra="" lsan_options="" fuzz_flags=""
+      asan_extra="" lsan_options="" fuzz_flags="" in_process=0
       fuzz scene "$fuzzer" "$scene_dict" 8192 tests/fuzz/corpus scenes || failed=1 ;;
     saved)
       # HDF5 sizes buffers by what a (malformed) file says: an allocation beyond
@@ -143,18 +143,16 @@ for t in $targets; do
       # HDF5's own leaks on a failed open are suppressed (tests/fuzz/hdf5.supp)
       asan_extra=":allocator_may_return_null=1:max_allocation_size_mb=2048"
       lsan_options=":suppressions=$PWD/tests/fuzz/hdf5.supp" fuzz_flags="-malloc_limit_mb=100000"
-      if [ "$long" = 1 ]; then export ARNOLDWEB_HDF5_IN_PROCESS=1; else unset ARNOLDWEB_HDF5_IN_PROCESS; fi
+      in_process=$long
       fuzz saved "$build_dir/arnoldweb_fuzz_saved_run" tests/fuzz/saved.dict 65536 tests/fuzz/corpus-saved \
-        || failed=1
-      unset ARNOLDWEB_HDF5_IN_PROCESS ;;
+        || failed=1 ;;
     states)
       # the same HDF5 allowances (the files are well-formed; the reader bounds memory by their size)
       asan_extra=":allocator_may_return_null=1:max_allocation_size_mb=2048"
       lsan_options=":suppressions=$PWD/tests/fuzz/hdf5.supp" fuzz_flags="-malloc_limit_mb=100000"
-      export ARNOLDWEB_HDF5_IN_PROCESS=1
+      in_process=1
       fuzz states "$build_dir/arnoldweb_fuzz_state_file" tests/fuzz/states.dict 65536 tests/fuzz/corpus-states \
-        || failed=1
-      unset ARNOLDWEB_HDF5_IN_PROCESS ;;
+        || failed=1 ;;
     *) echo "check-fuzz: unknown target $t (scene, saved, states)" >&2; exit 2 ;;
   esac
 done

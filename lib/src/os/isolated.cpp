@@ -83,10 +83,9 @@ void try_in_child(const std::function<void()>& work, const std::function<void(co
   while (::waitpid(pid, &status, 0) < 0) {
     if (errno != EINTR) return;  // not ours to wait for (SIGCHLD ignored): nothing known against it
   }
-  if (timed_out) died("did not finish within " + std::to_string(seconds) + " s (stopped)");
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) died(why_ended(status));
-  if (timed_out || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::logic_error("try_in_child: `died` returned");
+  if (!timed_out && WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
+  died(timed_out ? "did not finish within " + std::to_string(seconds) + " s (stopped)" : why_ended(status));
+  throw std::logic_error("try_in_child: `died` returned");
 }
 
 }  // namespace arnoldweb::detail

@@ -22,9 +22,9 @@ namespace arnoldweb::detail {
 // threw: the caller then does the work in this process, where it throws the same). When the
 // child ends in another way — killed by a signal, another exit status (a sanitizer's report),
 // or not within `seconds` (it is then killed) — `died` is called with why ("killed by signal 11
-// (Segmentation fault)", ...), and must throw. Does nothing but `work`'s tries where no child
+// (Segmentation fault)", ...), and must throw. Returns at once, trying nothing, where no child
 // can be made (fork fails) or ARNOLDWEB_HDF5_IN_PROCESS=1 is set (the fuzz targets' long
-// search, which needs the coverage of what the child would run): then it returns at once.
+// search, which needs the coverage of what the child would run).
 void try_in_child(const std::function<void()>& work, const std::function<void(const std::string&)>& died,
                   int seconds);
 

@@ -377,4 +377,9 @@ double H5File::number_attribute(const std::string& object, const char* name) con
   return v;
 }
 
+std::string hdf5_child_died(const std::string& why) {
+  return "HDF5 could not read it: its reader (a child process) " + why +
+         " (a damaged file: HDF5 1.10.8 fails on some damaged metadata; docs/reliability.md, \"Reading HDF5 files\")";
+}
+
 }  // namespace arnoldweb::detail

@@ -36,6 +36,7 @@
 #include <string>
 #include <vector>
 
+#include "os/isolated.hpp"
 #include "os/regular_file.hpp"
 #include "output/h5_heaps.hpp"
 #include "output/hdf5_handle.hpp"
@@ -95,5 +96,17 @@ class H5File {
 
 // "(3000, 3)", "()"
 std::string show_shape(const std::vector<hsize_t>& dims);
+
+// Why a file was refused when HDF5's reader of it, in a child process, died (`why`: how).
+std::string hdf5_child_died(const std::string& why);
+
+// `read` of a file of `bytes` bytes that arnoldweb cannot vouch for: done first in a child
+// process (os/isolated.hpp), where a defect of HDF5's parser ends the child and `fail("", ...)`
+// refuses the file, then here; returns what `read` returns here.
+template <class Read>
+auto read_in_child_first(std::uint64_t bytes, const H5Fail& fail, const Read& read) {
+  try_in_child([&] { read(); }, [&](const std::string& why) { fail("", hdf5_child_died(why)); }, seconds_for(bytes));
+  return read();
+}
 
 }  // namespace arnoldweb::detail

@@ -7,13 +7,11 @@
 
 #include <cerrno>
 #include <filesystem>
-#include <functional>
 
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/output.hpp"
 #include "arnoldweb/scene.hpp"
 #include "aw_params.h"
-#include "os/isolated.hpp"
 #include "os/regular_file.hpp"
 #include "output/file_digest.hpp"
 #include "output/h5_reader.hpp"
@@ -150,19 +148,6 @@ void read_map_bytes(std::string& bytes, const std::string& path, std::uint64_t n
   r.zoom.clear();
   if (!dims_of(f, "zoom", path).empty() || zoom > 0)
     r.zoom = read_counts(f, "zoom", {zoom, zoom}, path, "maps.zoom_resolution = " + std::to_string(zoom));
-}
-
-// HDF5 reads `bytes` first in a child process (os/isolated.hpp): a defect of its parser ends
-// the child, and is a refusal naming the file here. `read` is what is then done here.
-void try_hdf5_in_child(const std::string& bytes, const std::string& path, const std::function<void()>& read) {
-  detail::try_in_child(
-      read,
-      [&](const std::string& why) {
-        throw SavedRunError(path, "HDF5 could not read it: its reader (a child process) " + why +
-                                      " (a damaged file: HDF5 1.10.8 fails on some damaged metadata; "
-                                      "docs/reliability.md, \"Reading HDF5 files\")");
-      },
-      detail::seconds_for(bytes.size()));
 }
 
 }  // namespace
@@ -331,9 +316,8 @@ int read_saved_map_h5(const SavedDir& saved, Result& r) {
   const std::string path = saved.path("map.h5");
   std::string bytes = saved.read("map.h5", "the run made neither a velocity map nor a zoom "
                                            "(observe.velocity_map, observe.zoom)");
-  const auto read = [&] { read_map_bytes(bytes, path, nside, frames, zoom, r); };
-  try_hdf5_in_child(bytes, path, read);
-  read();
+  detail::read_in_child_first(bytes.size(), saved_run_error(path),
+                              [&] { read_map_bytes(bytes, path, nside, frames, zoom, r); });
   r.nside = static_cast<int>(nside);
   return static_cast<int>(zoom);
 }
@@ -402,10 +386,10 @@ std::string read_saved_hdf5_file(const std::string& dir, const std::string& name
   const detail::SavedDir saved(dir);
   std::string bytes = saved.read(name);
   const std::string path = saved.path(name);
-  // h5py iterates: all of it, first (in a child, then here)
-  const auto walk = [&] { detail::H5File(bytes, path, saved_run_error(path)).check_every_link(); };
-  try_hdf5_in_child(bytes, path, walk);
-  walk();
+  // h5py iterates: all of it, first
+  detail::read_in_child_first(bytes.size(), saved_run_error(path), [&] {
+    detail::H5File(bytes, path, saved_run_error(path)).check_every_link();
+  });
   return bytes;
 }
 

@@ -104,13 +104,15 @@ const KeyTable trajectory_keys = {
 
 // observe.frequencies: the leading frequency of every angle over two windows of `samples` samples
 // `every` T apart, Laskar's window of order `window` (docs/frequencies.md)
+// a table key's value of one number (as written, else its default)
+double real_value(const KeyTable& t, const KeyValues& v, const std::string& name) { return t.value(v, name)[0]; }
 std::int64_t integer_value(const KeyTable& t, const KeyValues& v, const std::string& name) {
-  return static_cast<std::int64_t>(t.value(v, name)[0]);
+  return static_cast<std::int64_t>(real_value(t, v, name));
 }
 
 KeyProblem check_frequencies(const KeyTable& t, const KeyValues& v, const KeyPlan& p) {
   const std::int64_t samples = integer_value(t, v, "samples");
-  const double every = t.value(v, "every")[0];
+  const double every = real_value(t, v, "every");
   if (static_cast<double>(p.segments / p.stride(t.sub("every"))) < 2.0 * static_cast<double>(samples))
     return {t.sub("samples"), "two windows of " + p.count(static_cast<std::uint64_t>(samples)) + " samples every " +
                                   p.number(every) + " T take " + p.number(2.0 * static_cast<double>(samples) * every) +
@@ -132,13 +134,13 @@ void fill_frequencies(const KeyTable& t, const KeyValues& v, const KeyPlan& p, I
 }
 
 void fill_frequency_reals(const KeyTable& t, const KeyValues& v, const KeyPlan&, RealParams& rp) {
-  rp.frequency_every = t.value(v, "every")[0];
+  rp.frequency_every = real_value(t, v, "every");
 }
 
 // the windows, attributes of frequencies.h5
 std::vector<KeyData> frequency_data(const KeyTable& t, const KeyValues& v, const KeyPlan&, const IntParams&) {
   return {{"samples", false, {}, {integer_value(t, v, "samples")}},
-          {"every", false, {t.value(v, "every")[0]}},
+          {"every", false, {real_value(t, v, "every")}},
           {"window_order", false, {}, {integer_value(t, v, "window")}}};
 }
 
@@ -168,7 +170,6 @@ const KeyTable frequency_keys = {
     fill_frequency_reals};
 
 // observe.diffusion: the actions every `every` T (each the mean over the last `average` T where it is > 0)
-double real_value(const KeyTable& t, const KeyValues& v, const std::string& name) { return t.value(v, name)[0]; }
 
 KeyProblem check_diffusion(const KeyTable& t, const KeyValues& v, const KeyPlan& p) {
   const double every = real_value(t, v, "every"), average = real_value(t, v, "average");

@@ -17,7 +17,6 @@
 
 #include "arnoldweb/errors.hpp"
 #include "arnoldweb/states.hpp"
-#include "os/isolated.hpp"
 #include "os/regular_file.hpp"
 #include "output/h5_reader.hpp"
 #include "output/saved_run.hpp"
@@ -219,18 +218,11 @@ StateSet read_state_file(const std::string& path) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions, not prints
   const detail::OpenPlainFile plain(path);
   check_file(path, plain);
-  // HDF5 reads the file first in a child process (os/isolated.hpp): a defect of its parser
-  // (tests/fuzz/hdf5-defects/) ends the child, and is a refusal naming the file here
-  detail::try_in_child(
-      [&] { read_states(path, plain); },
-      [&](const std::string& why) {
-        throw StateError(path, "", -1,
-                         "HDF5 could not read it: its reader (a child process) " + why +
-                             " (a damaged file: HDF5 1.10.8 fails on some damaged metadata; docs/reliability.md, "
-                             "\"Reading HDF5 files\")");
-      },
-      detail::seconds_for(plain.size()));
-  return read_states(path, plain);
+  // first in a child process (os/isolated.hpp): a defect of HDF5's parser ends the child
+  const detail::H5Fail fail = [&](const std::string& object, const std::string& message) {
+    throw StateError(path, object, -1, message);
+  };
+  return detail::read_in_child_first(plain.size(), fail, [&] { return read_states(path, plain); });
 }
 
 }  // namespace arnoldweb
