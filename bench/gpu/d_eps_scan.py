@@ -9,7 +9,9 @@ The plan, its rules and the commands: bench/gpu/campaigns/README.md ("The D(eps)
     d_eps_scan.py select --eps E --places FILE --fli H5 --out DIR      (h5py) the orbits chosen
     d_eps_scan.py states --eps E --places FILE --chosen FILE [--every-place K] --out H5   (h5py)
     d_eps_scan.py extract --run DIR --places FILE [--every-place K] --out DIR            (h5py)
-    d_eps_scan.py fit [--step MAIN_DIR STEP_DIR T_LO T_HI] [--svg PATH] RESULT_DIR...   the law, pure Python
+    d_eps_scan.py fit [--step MAIN_DIR STEP_DIR T_LO T_HI] [--shift EPS LN] [--svg PATH] RESULT_DIR...
+                                                         the law, pure Python; --shift: every D at EPS
+                                                         times exp(LN), a step error's bound, refitted
     d_eps_scan.py design [--csv 16-PLACE CSV]            the Fisher estimate of sigma(a) of designs
     d_eps_scan.py synthetic --a A --out DIR [...]        data of a known law (the test's)
 
@@ -457,6 +459,17 @@ def load_results(dirs):
     return rows
 
 
+def shifted(rows, eps, ln):
+    """The rows with every D of one eps (its value, error and halves) times exp(ln): how the fit
+    moves if that eps's D carried a systematic error of that size (the h/2 check's bound)."""
+    f = math.exp(ln)
+    keys = ("D", "D_se", "D_first", "D_second")
+    out = [dict(r, **{k: r[k] * f for k in keys}) if r["eps"] == eps else r for r in rows]
+    if out == rows and ln != 0:
+        sys.exit(f"d_eps_scan.py fit --shift: no run at eps {eps:g} (the runs have {sorted({r['eps'] for r in rows})})")
+    return out
+
+
 def observations(rows):
     eps = sorted({r["eps"] for r in rows})
     obs, kinds = [], {}
@@ -627,6 +640,10 @@ def cmd_fit(o, dirs):
     grid_step = float(o.get("grid", 0.01))
     grid = [round(0.02 + grid_step * i, 6) for i in range(int((1.5 - 0.02) / grid_step) + 1)]
     rows = load_results(dirs)
+    if o.get("shift"):
+        eps, ln = (float(x) for x in o["shift"])
+        rows = shifted(rows, eps, ln)
+        print(f"every D at eps {eps:g} times exp({ln:+g}) = {math.exp(ln):.3f} (--shift)\n")
     res = analyse(rows, grid, o.get("no-place-effects") is None)
     print("| eps | runs (places) | resolved, linear | not linear (interval) | unresolved (upper limit) | "
           "median D (per T) | median D 2nd half / 1st half |")
@@ -778,6 +795,9 @@ def options(argv):
         if argv[i] == "--step":
             o["step"] = argv[i + 1:i + 5]
             i += 5
+        elif argv[i] == "--shift":
+            o["shift"] = argv[i + 1:i + 3]
+            i += 3
         elif argv[i] == "--no-place-effects":
             o["no-place-effects"] = True
             i += 1

@@ -212,6 +212,22 @@ class Law(unittest.TestCase):
         self.assertEqual(n, 8)
         self.assertAlmostEqual(m, math.log(2), delta=3 * se + 0.01)
 
+    def test_shift_moves_one_eps_by_its_amount(self):
+        rows = [{"eps": e, "place": p, "D": d, "D_se": d / 10, "D_first": d, "D_second": d * k}
+                for e in (0.001, 0.002) for p, (d, k) in enumerate(((1e-18, 1.1), (1e-18, 3.0), (1e-20, 1.0)))]
+        rows[2]["D_se"] = 1e-19          # unresolved: an upper limit
+        moved = ds.shifted(rows, 0.001, 0.27)
+        for before, after in zip(rows, moved):
+            (k0, lo0, hi0), (k1, lo1, hi1) = ds.classify(before), ds.classify(after)
+            self.assertEqual(k0, k1)
+            dx = 0.27 if before["eps"] == 0.001 else 0.0
+            self.assertAlmostEqual(hi1 - hi0, dx, places=12)
+            if lo0 != -math.inf:
+                self.assertAlmostEqual(lo1 - lo0, dx, places=12)
+        self.assertEqual(rows[0]["D"], 1e-18)            # the input is not changed
+        with self.assertRaises(SystemExit):
+            ds.shifted(rows, 0.003, 0.27)
+
 
 class Design(unittest.TestCase):
     def test_present_design(self):
