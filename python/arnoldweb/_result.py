@@ -15,8 +15,9 @@ __all__ = ["Result", "COUNTER_NAMES", "INDICATOR_NAMES"]
 COUNTER_NAMES = ("trajectories", "completed", "binned", "flagged_nonfinite", "flagged_energy",
                  "flagged_initial", "left_region")
 _COUNTER_DTYPE = np.dtype([(n, np.uint64) for n in COUNTER_NAMES])
-#: The fields of Result.indicators, in the library's record order (AW_IND_* slots).
-INDICATOR_NAMES = ("fli", "megno", "megno_lyapunov", "lyapunov")
+#: The fields of Result.indicators, in the library's record order: the indicators row's
+#: datasets in the output table (lib/src/output_table/output_table.cpp), so a new one is here too.
+INDICATOR_NAMES = tuple(_core._output_fields("indicators"))
 _INDICATOR_DTYPE = np.dtype([(n, np.float64) for n in INDICATOR_NAMES])
 
 

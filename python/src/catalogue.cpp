@@ -78,6 +78,9 @@ void bind_catalogue(nb::module_& m) {
         "kick_first, family, stability, drift and kick coefficients).");
   m.def("scene_keys", &scene_keys,
         "Every scene key, as dicts (key, type, allowed, default, meaning): the table of docs/scenes.md.");
+  m.def("_output_fields", &arnoldweb::output_fields, nb::arg("output"),
+        "The names of an output's real columns in column order (the output table's datasets of one "
+        "column), or [] if they are not named one by one.");
 }
 
 }  // namespace awpy

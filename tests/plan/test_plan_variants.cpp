@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -101,6 +102,18 @@ TEST_SUITE("plan") {
     std::size_t reported = 0;
     for (const detail::RecordOutput& row : detail::record_outputs()) reported += row.internal() ? 0 : 1;
     CHECK(output_names().size() == reported);
+  }
+
+  TEST_CASE("output_fields names an output's real columns in column order (Python's record dtype)") {
+    const std::vector<std::string> ind = output_fields("indicators");
+    REQUIRE(ind.size() == static_cast<std::size_t>(AW_IND_REALS));
+    CHECK(ind[AW_IND_FLI] == "fli");
+    CHECK(ind[AW_IND_MEGNO] == "megno");
+    CHECK(ind[AW_IND_MEGNO_LYAPUNOV] == "megno_lyapunov");
+    CHECK(ind[AW_IND_LYAPUNOV] == "lyapunov");
+    // an output whose real datasets span several columns is not named column by column
+    CHECK(output_fields("final_states").empty());
+    CHECK_THROWS_AS(output_fields("no_such_output"), std::invalid_argument);
   }
 }
 

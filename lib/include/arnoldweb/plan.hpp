@@ -48,6 +48,12 @@ struct KernelConfig {
 // table's rows: "initial_states", "final_states", "indicators", ...), in order.
 std::vector<std::string> output_names();
 
+// The names of an output's real columns in column order, where each of its
+// real datasets is one column (e.g. "indicators": fli, megno, ...; Python's
+// record dtype), or {} for an output whose columns are not named one by one.
+// Throws std::invalid_argument for a name output_names() does not list.
+std::vector<std::string> output_fields(const std::string& output);
+
 // Names of the effects in a feature mask, e.g. {"velocity_map", "energy_error"}.
 std::vector<std::string> feature_names(std::uint32_t features);
 

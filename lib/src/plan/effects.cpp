@@ -2,6 +2,9 @@
 #include "plan/effects.hpp"
 
 #include "arnoldweb/plan.hpp"
+
+#include <map>
+#include <stdexcept>
 #include "aw_params.h"
 #include "output_table/output_table.hpp"
 
@@ -68,6 +71,20 @@ std::vector<std::string> output_names() {
   std::vector<std::string> names;
   for (const detail::RecordOutput& r : detail::record_outputs())
     if (!r.internal()) names.push_back(r.name);
+  return names;
+}
+
+std::vector<std::string> output_fields(const std::string& output) {
+  const detail::RecordOutput* row = detail::find_record_output(output);
+  if (!row || row->internal()) throw std::invalid_argument("no output named \"" + output + "\"");
+  std::map<int, std::string> by_column;
+  for (const detail::RecordDataset& d : row->datasets)
+    if (!d.integers && (d.count != 1 || !by_column.emplace(d.first, d.name).second)) return {};
+  std::vector<std::string> names;
+  for (const auto& [column, name] : by_column) {
+    if (column != static_cast<int>(names.size())) return {};  // a column without a name
+    names.push_back(name);
+  }
   return names;
 }
 
