@@ -158,8 +158,9 @@ double two_trajectory_lyapunov(const Plan& plan, const double* start, const Poin
 Point unit_w0(const Scene& s) {
   Point w;
   double n = 0;
-  for (double v : s.tangent_initial) n += v * v;
-  for (std::size_t i = 0; i < 6; ++i) w[i] = s.tangent_initial[i] / std::sqrt(n);
+  const std::vector<double> t = s.output_value("observe.tangent_initial");
+  for (double v : t) n += v * v;
+  for (std::size_t i = 0; i < 6; ++i) w[i] = t[i] / std::sqrt(n);
   return w;
 }
 

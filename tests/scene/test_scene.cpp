@@ -87,7 +87,7 @@ void check_same(const Scene& a, const Scene& b) {
     CHECK_MESSAGE(a.output_value(k.key) == b.output_value(k.key), k.key);
   // chaos indicators and grids
   CHECK(a.switches == b.switches);
-  CHECK(a.tangent_initial == b.tangent_initial);
+  CHECK(a.output_value("observe.tangent_initial") == b.output_value("observe.tangent_initial"));
   CHECK(a.grid_kind == b.grid_kind);
   CHECK(a.grid_nside == b.grid_nside);
   CHECK(a.grid_resolution == b.grid_resolution);
@@ -254,6 +254,16 @@ TEST_SUITE("scene") {
     CHECK(s.origin("model.energy") == "default");
   }
 
+  TEST_CASE("a direction key of the output table (observe.tangent_initial): its default, as written, in output_values") {
+    const Scene d = parse("");
+    CHECK(d.output_values.count("observe.tangent_initial") == 0);
+    CHECK(d.output_value("observe.tangent_initial") == std::vector<double>{0.3, -0.7, 0.5, 0.2, 0.6, -0.1});
+    const Scene s = parse("[observe]\ntangent_initial = [0, 0, 3, 0, 0, 4]\n");
+    CHECK(s.output_values.at("observe.tangent_initial") == std::vector<double>{0, 0, 3, 0, 0, 4});
+    CHECK(s.output_value("observe.tangent_initial") == std::vector<double>{0, 0, 3, 0, 0, 4});
+    CHECK(s.pos("observe.tangent_initial").line == 2);
+  }
+
   TEST_CASE("every key is read, with its position") {
     const std::string text = full_scene();
     const Scene s = parse(text);
@@ -307,7 +317,7 @@ TEST_SUITE("scene") {
     CHECK(s.observes("observe.fli"));
     CHECK(s.observes("observe.megno"));
     CHECK(s.observes("observe.lyapunov"));
-    CHECK(s.tangent_initial == std::vector<double>{1, 0, 0, 0, 0, 2});
+    CHECK(s.output_value("observe.tangent_initial") == std::vector<double>{1, 0, 0, 0, 0, 2});
     CHECK(s.output_value("observe.frequencies") == std::vector<double>{1});
     CHECK(s.output_value("observe.frequencies.samples") == std::vector<double>{1024});
     CHECK(s.output_value("observe.frequencies.every") == std::vector<double>{0.05});
@@ -770,7 +780,7 @@ TEST_SUITE("scene") {
                                             "observe.tangent_initial=[0, 0, 0, 0, 0, -1e-150]"});
     CHECK(s.output_value("observe.diffusion.along") == std::vector<double>{1e-150, 1e-151, 0});
     CHECK(s.output_value("observe.diffusion.across") == std::vector<double>{-1e150, 1e150, 1e150});
-    CHECK(s.tangent_initial.back() == -1e-150);
+    CHECK(s.output_value("observe.tangent_initial").back() == -1e-150);
   }
 
   TEST_CASE("issue 37: a label a user typed is echoed with its control characters escaped") {

@@ -104,12 +104,12 @@ struct Scene {
   // keys` lists them. No field here per output.
   std::set<std::string> switches;
   bool observes(const std::string& key) const { return switches.count(key) > 0; }
-  // The values of the output table's table keys as written (a dotted sub-key,
+  // The values of the output table's table keys and direction keys as written (a dotted sub-key,
   // "observe.trajectories.ids" -> its numbers; a sub-key not written takes its
   // row's default): each row declares its own (KeyTable). No field here per output.
   std::map<std::string, std::vector<double>> output_values;
   // A sub-key's values: as written, else its row's default (none: not set, or no such key);
-  // a table key's: {1} when switched on, none when off.
+  // a table key's: {1} when switched on, none when off; a direction key's: as written, else its default.
   std::vector<double> output_value(const std::string& key) const;
   bool initial_states = false;
   bool final_states = false;
@@ -125,10 +125,9 @@ struct Scene {
   // observe.frames: one map per span [t_k, t_k+1) of window start times, in T
   std::vector<double> frame_times;
 
-  // Chaos indicators (docs/indicators.md; their switches are the indicators
-  // row's, in Scene::switches): the initial tangent vector (dX in radians, dP;
-  // normalised when planned), and grids of initial conditions (ensemble.initial = "grid").
-  std::vector<double> tangent_initial = {0.3, -0.7, 0.5, 0.2, 0.6, -0.1};
+  // Grids of initial conditions (ensemble.initial = "grid"; chaos indicators'
+  // switches and their initial tangent vector, observe.tangent_initial, are
+  // the indicators row's: Scene::switches and Scene::output_values).
   std::string grid_kind = "healpix";                // ensemble.grid.kind: healpix, lonlat, plane
   int grid_nside = 16;                              // ensemble.grid.nside (healpix)
   std::array<double, 2> grid_resolution = {64, 64}; // ensemble.grid.resolution (lonlat, plane)

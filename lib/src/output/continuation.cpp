@@ -59,15 +59,16 @@ const std::vector<std::string>& continue_keys() {
   // Not: model.*, integrator.*, ensemble.* but chunk (they make other trajectories), run.duration
   // (the duration is the continuation's own), observe.max_energy_error and observe.confine (they
   // flag trajectories, whose status the final states carry).
-  // The output table's switches and table keys too (an output leaves the trajectories as they are).
+  // The output table's switches, table keys and direction keys too (an output leaves the trajectories as they are).
   static const std::vector<std::string> keys = [] {
     std::vector<std::string> k = {
         "run.device",           "run.checkpoint_every", "run.slice",         "run.average",
         "ensemble.chunk",       "observe.velocity_map", "observe.energy_error", "observe.initial_states",
-        "observe.final_states", "observe.zoom",         "observe.frames",    "observe.tangent_initial",
+        "observe.final_states", "observe.zoom",         "observe.frames",
         "output.dir",           "output.images"};
     for (const detail::OutputSwitch* w : detail::output_switches()) k.push_back(w->key);
     for (const detail::KeyTable* t : detail::key_tables()) k.push_back(t->key);
+    for (const detail::DirectionKey* d : detail::direction_keys()) k.push_back(d->key);
     return k;
   }();
   return keys;

@@ -66,8 +66,8 @@ void write_dataset(H5Writer& h, hid_t where, const OutputDataset& d) {
 void plan_attribute(H5Writer& h, hid_t where, const std::string& name, const Plan& plan) {
   if (name == "duration")
     h.attr(where, "duration", plan.scene.duration);
-  else if (name == "tangent_initial")
-    h.attr(where, "tangent_initial", plan.scene.tangent_initial);
+  else if (const detail::DirectionKey* k = detail::find_direction_key("observe." + name))
+    h.attr(where, name.c_str(), k->value(plan.scene.output_values));
   else if (name == "time_start")  // when the states were taken, in T (a state file's time)
     h.attr(where, "time", plan.start_time());
   else if (name == "time_end")

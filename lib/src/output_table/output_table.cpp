@@ -319,7 +319,16 @@ const std::vector<RecordOutput>& record_outputs() {
          "Lyapunov exponent from its slope."}},
        {},
        nullptr,
-       {"map_and_fli"}},
+       {"map_and_fli"},
+       {{"observe.tangent_initial", 6, {0.3, -0.7, 0.5, 0.2, 0.6, -0.1},
+         "Initial tangent vector (dX in radians, dP) of the indicators, normalised to 1. The default has no symmetry "
+         "between coordinates (a symmetric one stays in symmetric planes and hides resonances such as I1 = I2).",
+         [](const std::vector<double>& v, RealParams& rp) {
+           double n2 = 0;
+           for (double w : v) n2 += w * w;
+           const double norm = std::sqrt(n2);
+           for (std::size_t i = 0; i < 6; ++i) rp.tangent_w0[i] = v[i] / norm;
+         }}}},
       {"frequencies", AW_OUT_FREQUENCIES, AW_F_FREQUENCIES, fixed(AW_FREQ_REALS), fixed(0), "frequencies.h5", "", true,
        {{"nu_first", false, 0, 3, "the frequency of the largest term of each angle (x, y, z) over the first window, turns per T; "
                                   "NaN: trajectory flagged, or no maximum found"},
@@ -382,6 +391,24 @@ std::vector<const KeyTable*> key_tables() {
   for (const RecordOutput& r : record_outputs())
     for (const KeyTable& t : r.tables) all.push_back(&t);
   return all;
+}
+
+std::vector<const DirectionKey*> direction_keys() {
+  std::vector<const DirectionKey*> all;
+  for (const RecordOutput& r : record_outputs())
+    for (const DirectionKey& k : r.directions) all.push_back(&k);
+  return all;
+}
+
+const DirectionKey* find_direction_key(const std::string& key) {
+  for (const DirectionKey* k : direction_keys())
+    if (k->key == key) return k;
+  return nullptr;
+}
+
+const std::vector<double>& DirectionKey::value(const KeyValues& v) const {
+  const auto it = v.find(key);
+  return it == v.end() ? default_value : it->second;
 }
 
 std::uint32_t switch_features(const std::set<std::string>& on, const KeyValues& values) {

@@ -78,7 +78,7 @@ struct OutputSwitch {
 // numbers (integers held exactly), for the sub-keys written only.
 using KeyValues = std::map<std::string, std::vector<double>>;
 
-// The allowed values of a direction (TableSubKey::Kind::Direction, observe.tangent_initial):
+// The allowed values of a direction (TableSubKey::Kind::Direction, DirectionKey):
 // normalised by its length, whose square must neither overflow nor underflow.
 constexpr const char* kDirectionRange = "largest absolute component from 1e-150 to 1e150";
 
@@ -178,6 +178,25 @@ struct KeyTable {
   bool written(const Values& v, const std::string& name) const { return v.count(sub(name)) > 0; }
 };
 
+// A direction-valued scene key that parametrises a row's effect, neither a
+// switch nor a table: `observe.tangent_initial = [6 floats]`, normalised by its
+// length. The scene keeps it in Scene::output_values under its key when written
+// (else `default_value` holds); the key table (lib/src/scene/keys.cpp) reads,
+// writes and documents it from here (kDirectionRange), `continue` may set it,
+// the planner fills the kernels' real parameters from its value (`fill_reals`,
+// always: neutral where the row is off), and the writer makes it an attribute
+// of the row's file where the row's `attributes` name it (the key's last part).
+struct DirectionKey {
+  std::string key;  // "observe.<name>"
+  std::size_t count = 3;  // its components
+  std::vector<double> default_value;
+  std::string meaning;
+  std::function<void(const std::vector<double>& v, RealParams& rp)> fill_reals = nullptr;
+  std::string name() const { return key.substr(key.find('.') + 1); }
+  // its value in a scene's output values: as written, else its default
+  const std::vector<double>& value(const KeyValues& v) const;
+};
+
 struct RecordOutput {
   std::string name;           // Result::records_of, summary.json "digests", Python
   int slot = 0;               // AW_OUT_* (aw_params.h)
@@ -190,7 +209,7 @@ struct RecordOutput {
   bool grid_shaped = false;
   std::vector<RecordDataset> datasets;
   std::string meaning;        // one line, for docs and `arnoldweb outputs`
-  // attributes of the file's root taken from the plan ("duration", "tangent_initial")
+  // attributes of the file's root taken from the plan ("duration"; a direction key's name)
   std::vector<std::string> attributes = {};
   std::vector<OutputSwitch> switches = {};  // the boolean keys that ask for it
   std::vector<KeyTable> tables = {};        // the table keys that ask for it
@@ -203,6 +222,7 @@ struct RecordOutput {
   // The pictures drawn of its records: names of rows of the pictures plugin's
   // picture table (lib/src/pictures/picture_table.cpp).
   std::vector<std::string> pictures = {};
+  std::vector<DirectionKey> directions = {};  // the direction keys that parametrise it
   // Kept between launches only (checkpoints), never a result: no file.
   bool internal() const { return file.empty(); }
 };
@@ -212,6 +232,9 @@ const std::vector<RecordOutput>& record_outputs();
 std::vector<const OutputSwitch*> output_switches();
 // Every row's table keys, in table order.
 std::vector<const KeyTable*> key_tables();
+// Every row's direction keys, in table order; one by its key ("observe.<name>"), or nullptr.
+std::vector<const DirectionKey*> direction_keys();
+const DirectionKey* find_direction_key(const std::string& key);
 // The AW_F_* bits the switches set true (their keys in `on`) and the table keys
 // switched on (their values) ask for.
 std::uint32_t switch_features(const std::set<std::string>& on, const KeyValues& values);

@@ -34,6 +34,8 @@ void fill_analysis_ints(const Scene& scene, const Plan& p, IntParams& ip) {
 }
 
 void fill_analysis_reals(const Scene& scene, const Plan& p, RealParams& rp) {
+  for (const DirectionKey* k : direction_keys())
+    if (k->fill_reals) k->fill_reals(k->value(scene.output_values), rp);
   for (const KeyTable* t : key_tables())
     if (t->fill_reals && t->on(scene.output_values)) t->fill_reals(*t, scene.output_values, key_plan(scene, p), rp);
 }

@@ -53,11 +53,7 @@ void plan_grid(const Scene& scene, const ModelDescriptor& model, const RealParam
 }
 
 void fill_indicator_reals(const Scene& scene, const Plan& p, RealParams& rp) {
-  double n2 = 0;
-  for (double w : scene.tangent_initial) n2 += w * w;
-  const double norm = std::sqrt(n2);
-  for (int i = 0; i < 6; ++i) rp.tangent_w0[i] = scene.tangent_initial[static_cast<std::size_t>(i)] / norm;
-  rp.tangent_step = p.step;
+  rp.tangent_step = p.step;  // (the initial tangent vector: its direction key in the output table)
   if (scene.initial != "grid") return;
   const auto u = position_turns(scene);
   for (int i = 0; i < 3; ++i) rp.grid_position[i] = u[static_cast<std::size_t>(i)];

@@ -771,15 +771,19 @@ void output_switch_keys(Rows& add) {
   }
 }
 
-// The indicators' initial tangent vector (their switches are the output table's, before it).
-void tangent_key(Rows& add) {
-  add("observe.tangent_initial", "array of 6 floats", kDirectionRange, std::string("an array of 6 floats, ") + kDirectionRange,
-      [](const Scene& s) { return list(s.tangent_initial); },
-      [](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
-        read_direction(r, key, n, 6, s.tangent_initial);
-      },
-      "Initial tangent vector (dX in radians, dP) of the indicators, normalised to 1. The default has no symmetry "
-      "between coordinates (a symmetric one stays in symmetric planes and hides resonances such as I1 = I2).");
+// The output table's direction keys (DirectionKey: observe.tangent_initial), kept in
+// Scene::output_values under their key when written.
+void direction_keys(Rows& add) {
+  for (const detail::DirectionKey* d : detail::direction_keys()) {
+    const std::string type = "array of " + std::to_string(d->count) + " floats";
+    add(d->key, type, kDirectionRange, "an " + type + ", " + kDirectionRange,
+        [d](const Scene& s) { return list(d->value(s.output_values)); },
+        [d](Reader& r, const std::string& key, const toml::node& n, Scene& s) {
+          std::vector<double> v;
+          if (read_direction(r, key, n, d->count, v)) s.output_values[key] = v;
+        },
+        d->meaning);
+  }
 }
 
 // [[panel]] tables are read as a whole (panels.cpp); these rows document them.
@@ -803,7 +807,7 @@ std::vector<KeySpec> build() {
   observe_keys(rows);
   indicator_keys(rows);
   output_switch_keys(rows);
-  tangent_key(rows);
+  direction_keys(rows);
   output_table_keys(rows);
   output_keys(rows);
   panel_keys(rows);

@@ -40,6 +40,7 @@ std::vector<double> Scene::output_value(const std::string& key) const {
     for (const detail::TableSubKey& k : t->keys)
       if (t->sub(k.name) == key) return t->value(output_values, k.name);
   }
+  if (const detail::DirectionKey* d = detail::find_direction_key(key)) return d->value(output_values);
   return {};
 }
 
