@@ -24,7 +24,9 @@ namespace arnoldweb::detail {
 // or not within `seconds` (it is then killed) — `died` is called with why ("killed by signal 11
 // (Segmentation fault)", ...), and must throw. Returns at once, trying nothing, where no child
 // can be made (fork fails) or ARNOLDWEB_HDF5_IN_PROCESS=1 is set (the fuzz targets' long
-// search, which needs the coverage of what the child would run).
+// search, which needs the coverage of what the child would run). Where this process's children
+// are reaped as they end (SIGCHLD ignored, or SA_NOCLDWAIT) waitpid finds no status: the child
+// then runs the work in a grandchild of its own and writes its status into a pipe instead.
 void try_in_child(const std::function<void()>& work, const std::function<void(const std::string&)>& died,
                   int seconds);
 
