@@ -62,19 +62,10 @@ void write_dataset(H5Writer& h, hid_t where, const OutputDataset& d) {
   if (!d.meaning.empty()) h.attr(set, "meaning", d.meaning);
 }
 
-// The direction key whose name (its key's last part: "tangent_initial") a row's attributes give, or nullptr.
-const detail::DirectionKey* direction_key_named(const std::string& name) {
-  for (const detail::DirectionKey* k : detail::direction_keys())
-    if (k->name() == name) return k;
-  return nullptr;
-}
-
 // An attribute a row asks for (RecordOutput::attributes) from the plan, on its group.
 void plan_attribute(H5Writer& h, hid_t where, const std::string& name, const Plan& plan) {
   if (name == "duration")
     h.attr(where, "duration", plan.scene.duration);
-  else if (const detail::DirectionKey* k = direction_key_named(name))
-    h.attr(where, name.c_str(), k->value(plan.scene.output_values));
   else if (name == "time_start")  // when the states were taken, in T (a state file's time)
     h.attr(where, "time", plan.start_time());
   else if (name == "time_end")
@@ -120,6 +111,7 @@ void write_records_hdf5(const std::string& path, const std::string& file, const 
         if (d.output == row.name) write_dataset(h, where, d);
       h.attr(where, "digest", digest_records(r, row.name));
       for (const std::string& a : row.attributes) plan_attribute(h, where, a, plan);
+      for (const detail::DirectionKey& k : row.directions) h.attr(where, k.name().c_str(), k.value(s.output_values));
       key_table_data(h, where, row, plan);
       grid = grid || (row.grid_shaped && s.initial == "grid");
     }

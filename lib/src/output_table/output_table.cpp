@@ -102,13 +102,14 @@ const KeyTable trajectory_keys = {
     fill_trajectories,
     trajectory_data};
 
-// observe.frequencies: the leading frequency of every angle over two windows of `samples` samples
-// `every` T apart, Laskar's window of order `window` (docs/frequencies.md)
 // a table key's value of one number (as written, else its default)
 double real_value(const KeyTable& t, const KeyValues& v, const std::string& name) { return t.value(v, name)[0]; }
 std::int64_t integer_value(const KeyTable& t, const KeyValues& v, const std::string& name) {
   return static_cast<std::int64_t>(real_value(t, v, name));
 }
+
+// observe.frequencies: the leading frequency of every angle over two windows of `samples` samples
+// `every` T apart, Laskar's window of order `window` (docs/frequencies.md)
 
 KeyProblem check_frequencies(const KeyTable& t, const KeyValues& v, const KeyPlan& p) {
   const std::int64_t samples = integer_value(t, v, "samples");
@@ -170,7 +171,6 @@ const KeyTable frequency_keys = {
     fill_frequency_reals};
 
 // observe.diffusion: the actions every `every` T (each the mean over the last `average` T where it is > 0)
-
 KeyProblem check_diffusion(const KeyTable& t, const KeyValues& v, const KeyPlan& p) {
   const double every = real_value(t, v, "every"), average = real_value(t, v, "average");
   const double average_every = real_value(t, v, "average_every"), fit_from = real_value(t, v, "fit_from");
@@ -308,7 +308,7 @@ const std::vector<RecordOutput>& record_outputs() {
          "log|w(t)| / t at the end of the run: finite-time Lyapunov exponent, 1/T; NaN: trajectory flagged",
          AW_F_LYAPUNOV}},
        "the chaos indicators of every trajectory (FLI, MEGNO, Lyapunov exponents; docs/indicators.md)",
-       {"duration", "tangent_initial"},
+       {"duration"},
        {{"observe.fli", AW_F_FLI, AW_F_TANGENT,
          "Fast Lyapunov indicator of every trajectory: max over the run of the log of the norm of the tangent vector w "
          "(norm 1 at the start)."},

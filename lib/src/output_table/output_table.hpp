@@ -185,7 +185,7 @@ struct KeyTable {
 // writes and documents it from here (kDirectionRange), `continue` may set it,
 // the planner fills the kernels' real parameters from its value (`fill_reals`,
 // always: neutral where the row is off), and the writer makes it an attribute
-// of the row's file where the row's `attributes` name it (the key's last part).
+// of the row's file named after the key's last part ("tangent_initial").
 struct DirectionKey {
   std::string key;  // "observe.<name>"
   std::size_t count = 3;  // its components
@@ -209,7 +209,7 @@ struct RecordOutput {
   bool grid_shaped = false;
   std::vector<RecordDataset> datasets;
   std::string meaning;        // one line, for docs and `arnoldweb outputs`
-  // attributes of the file's root taken from the plan ("duration"; a direction key's name)
+  // attributes of the file's root taken from the plan ("duration"; its direction keys follow)
   std::vector<std::string> attributes = {};
   std::vector<OutputSwitch> switches = {};  // the boolean keys that ask for it
   std::vector<KeyTable> tables = {};        // the table keys that ask for it

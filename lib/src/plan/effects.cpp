@@ -1,10 +1,10 @@
 // arnoldweb: the effect table (effects.hpp).
 #include "plan/effects.hpp"
 
-#include "arnoldweb/plan.hpp"
-
 #include <map>
 #include <stdexcept>
+
+#include "arnoldweb/plan.hpp"
 #include "aw_params.h"
 #include "output_table/output_table.hpp"
 
