@@ -104,29 +104,31 @@ PY
 fi
 if [ -n "${AW_RATES_NCU:-}" ] && command -v ncu >/dev/null; then
   echo "== ncu: each variant's first aw_ensemble launch of Figure 3 (a), 2^20 trajectories"
+  # metric=label, one list for ncu's --metrics and the printed line
+  columns="sm__pipe_fp64_cycles_active.avg.pct_of_peak_sustained_active=FP64 pipe busy %;\
+sm__inst_executed_pipe_fp64.avg.pct_of_peak_sustained_active=FP64 inst %;\
+smsp__issue_active.avg.pct_of_peak_sustained_active=issue active %;\
+sm__warps_active.avg.pct_of_peak_sustained_active=warps active %;\
+launch__registers_per_thread=registers;\
+smsp__average_warps_issue_stalled_wait_per_issue_active.ratio=stall wait;\
+smsp__average_warps_issue_stalled_math_pipe_throttle_per_issue_active.ratio=stall math pipe;\
+smsp__average_warps_issue_stalled_short_scoreboard_per_issue_active.ratio=stall short scoreboard;\
+smsp__average_warps_issue_stalled_not_selected_per_issue_active.ratio=not selected;\
+sm__cycles_elapsed.avg.per_second=SM cycles/s"
+  metrics=$(tr ';' '\n' <<<"$columns" | cut -d= -f1 | paste -sd,)
   for v in "${variants[@]}"; do
     name=${v%%=*}
     ARNOLDWEB_NVRTC_OPTIONS="${v#*=}" timeout 120 ncu --clock-control none -k regex:aw_ensemble --launch-count 1 --csv --page raw \
-      --metrics sm__pipe_fp64_cycles_active.avg.pct_of_peak_sustained_active,sm__inst_executed_pipe_fp64.avg.pct_of_peak_sustained_active,smsp__issue_active.avg.pct_of_peak_sustained_active,sm__warps_active.avg.pct_of_peak_sustained_active,launch__registers_per_thread,smsp__average_warps_issue_stalled_wait_per_issue_active.ratio,smsp__average_warps_issue_stalled_math_pipe_throttle_per_issue_active.ratio,smsp__average_warps_issue_stalled_short_scoreboard_per_issue_active.ratio,smsp__average_warps_issue_stalled_not_selected_per_issue_active.ratio,sm__cycles_elapsed.avg.per_second \
-      "$AW" run "$OUT/fig3a.toml" --quiet --device "$DEV" --out "$OUT/ncu-$name" --set output.images=false \
-      --set ensemble.trajectories=1048576 >"$OUT/ncu-$name.csv" 2>"$OUT/ncu-$name.err"
-    python3 - "$OUT/ncu-$name.csv" "$name" <<'PY'
+      --metrics "$metrics" "$AW" run "$OUT/fig3a.toml" --quiet --device "$DEV" --out "$OUT/ncu-$name" \
+      --set output.images=false --set ensemble.trajectories=1048576 >"$OUT/ncu-$name.csv" 2>"$OUT/ncu-$name.err"
+    python3 - "$OUT/ncu-$name.csv" "$name" "$columns" <<'PY'
 import csv, sys
 rows = [r for r in csv.reader(open(sys.argv[1])) if r]
 head = next((i for i, r in enumerate(rows) if "Kernel Name" in r), None)
 if head is None or len(rows) < head + 3:
     print(f"  {sys.argv[2]:22s} no ncu rows"); sys.exit(0)
 h, d = rows[head], rows[head + 2]
-short = {"sm__pipe_fp64_cycles_active.avg.pct_of_peak_sustained_active": "FP64 pipe busy %",
-         "sm__inst_executed_pipe_fp64.avg.pct_of_peak_sustained_active": "FP64 inst %",
-         "smsp__issue_active.avg.pct_of_peak_sustained_active": "issue active %",
-         "sm__warps_active.avg.pct_of_peak_sustained_active": "warps active %",
-         "launch__registers_per_thread": "registers",
-         "smsp__average_warps_issue_stalled_wait_per_issue_active.ratio": "stall wait",
-         "smsp__average_warps_issue_stalled_math_pipe_throttle_per_issue_active.ratio": "stall math pipe",
-         "smsp__average_warps_issue_stalled_short_scoreboard_per_issue_active.ratio": "stall short scoreboard",
-         "smsp__average_warps_issue_stalled_not_selected_per_issue_active.ratio": "not selected",
-         "sm__cycles_elapsed.avg.per_second": "SM cycles/s"}
+short = dict(c.split("=", 1) for c in sys.argv[3].split(";"))
 print(f"  {sys.argv[2]:22s} " + ", ".join(f"{short[k]} {d[h.index(k)]}" for k in short if k in h))
 PY
     rm -rf "${OUT:?}/ncu-$name"
