@@ -42,11 +42,11 @@ AW_FN void aw_ensemble_item(aw_config cfg, aw_lanes l, aw_i64 seg_first, aw_i64 
       accepted = aw_initial_state(&s, cfg.initial, l.first, rp, ip);
     aw_fx_begin(cfg, &fx, &s, accepted, l, rp, ip, out);
     if (AW_HAS(AW_F_CARRY) && cfg.initial == AW_INITIAL_FILE)
-      for (int j = 0; j < AW_LANES; ++j) fx.status[j] = given[j]; /* a state flagged before stays flagged */
+      for (int j = 0; j < AW_LANES; ++j) fx.core.status[j] = given[j]; /* a state flagged before stays flagged */
     ws.ux = s.ux, ws.uy = s.uy, ws.uz = s.uz; /* the first window starts here */
     ws.wx = s.wx, ws.wy = s.wy, ws.wz = s.wz;
   } else {
-    aw_carry_load(&s, &fx, &ws, out, ip, l);
+    aw_carry_load(cfg, &s, &fx, &ws, out, ip, l);
   }
   aw_fx_first_force(cfg, &fx, &s, rp);
   aw_fx_counts_begin(cfg, &fx, seg_first, ip);
@@ -74,12 +74,11 @@ AW_FN void aw_ensemble_item(aw_config cfg, aw_lanes l, aw_i64 seg_first, aw_i64 
     }
   }
   if (seg_end < ip->windows * segments) { /* a time slice: the next launch goes on from here */
-    if (AW_HAS(AW_F_CARRY)) aw_carry_save(&s, &fx, &ws, out, ip, l);
+    if (AW_HAS(AW_F_CARRY)) aw_carry_save(cfg, &s, &fx, &ws, out, ip, l);
     *emax = AW_R(0.0);
     *esum = AW_R(0.0);
     return;
   }
-  if (AW_HAS(AW_F_REVERSE)) aw_reverse(cfg, &s, rp, ip);
   aw_fx_finish(cfg, &fx, &s, l, out, emax, esum, rp, ip);
 }
 

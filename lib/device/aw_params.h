@@ -40,6 +40,8 @@
 /* the sampled states of chosen trajectories (observe.trajectories) */
 #define AW_F_TRAJECTORIES 0x20000u
 #define AW_F_ALL 0x3ffffu
+/* the effects that read E(0) of a trajectory (aw_fx_core.e0) */
+#define AW_F_WITH_E0 (AW_F_ENERGY | AW_F_TRAJECTORIES)
 
 /* ------------------------------------------------ initial distributions
  * X is uniform on the accessible part of the torus in every case. */
@@ -144,7 +146,8 @@
  *   ints:  winding x y z, status | the window's start windings x y z | tangent steps */
 #define AW_CARRY_REALS 26
 #define AW_CARRY_INTS 8
-#define AW_CARRY_ENERGY 6
+#define AW_CARRY_ENERGY 6   /* E(0), then the energy effect's max|dE| and over-limit */
+#define AW_CARRY_CONFINE 9  /* the confine effect's inside */
 #define AW_CARRY_WINDOW 10
 #define AW_CARRY_TANGENT 13
 

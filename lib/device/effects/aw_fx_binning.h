@@ -8,6 +8,8 @@
 #include "aw_healpix.h"
 #include "effects/aw_fx_common.h"
 
+AW_EFFECT_ORDER(90)
+
 /* Bin of direction (x, y, z) in the R x R zoom histogram of region r, or -1. */
 AW_FN aw_i64 aw_zoom_bin(AW_CONSTANT aw_region* r, aw_i64 res, real x, real y, real z) {
   real dc = AW_FMA(z, r->c[2], AW_FMA(y, r->c[1], x * r->c[0]));
@@ -49,6 +51,16 @@ AW_FN void aw_bin_window(aw_config cfg, AW_CONSTANT aw_rparams* rp, AW_CONSTANT 
     aw_i64 bin = aw_zoom_bin(&rp->zoom, ip->zoom_resolution, dx, dy, dz);
     if (bin >= 0) AW_ATOMIC_INC(&zoom[bin]);
   }
+}
+
+/* At the end of window w: the displacements (dx, dy, dz) of the lanes that
+ * are still fine after the window's flags, binned. */
+AW_FN void aw_fx_binning_window_end(aw_config cfg, aw_fx_core* fx, aw_i64 w, const real* dx, const real* dy,
+                                    const real* dz, aw_lanes l, AW_CONSTANT aw_rparams* rp,
+                                    AW_CONSTANT aw_iparams* ip, aw_outputs out) {
+  const int frame = AW_HAS(AW_F_FRAMES) ? aw_frame_of(ip, w) : 0;
+  for (int j = 0; j < AW_LANES; ++j)
+    if (fx->status[j] == AW_STATUS_OK && AW_LANE_ACTIVE(l, j)) aw_bin_window(cfg, rp, ip, out, frame, dx[j], dy[j], dz[j]);
 }
 
 #endif /* AW_FX_BINNING_H */

@@ -64,15 +64,51 @@ typedef struct {
 /* The record of lane j: its trajectory's index relative to the chunk's first. */
 #define AW_LANE_RECORD(l, j) ((l).first + (aw_u64)(j) - (l).chunk_first)
 
-/* 1 in the lanes whose direction (x, y, z) lies in the gnomonic square region
- * r (aw_params.h), 0 elsewhere. */
-AW_FN lreal aw_in_region(AW_CONSTANT aw_region* r, lreal x, lreal y, lreal z) {
-  lreal dc = AW_FMA(z, AW_LSPLAT(r->c[2]), AW_FMA(y, AW_LSPLAT(r->c[1]), x * r->c[0]));
-  lreal d1 = AW_FMA(z, AW_LSPLAT(r->e1[2]), AW_FMA(y, AW_LSPLAT(r->e1[1]), x * r->e1[0]));
-  lreal d2 = AW_FMA(z, AW_LSPLAT(r->e2[2]), AW_FMA(y, AW_LSPLAT(r->e2[1]), x * r->e2[0]));
-  lreal lim = dc * r->half_width;
-  return AW_SELECT(AW_LSPLAT(AW_R(1.0)), AW_LSPLAT(AW_R(0.0)),
-                   (dc <= AW_R(0.0)) | (AW_FABS(d1) > lim) | (AW_FABS(d2) > lim));
+/* Element c of the lanes' carry records (AW_OUT_CARRY, aw_params.h): reals
+ * and integers, read (idle lanes read 0) and written (idle lanes write
+ * nothing). */
+AW_FN lreal aw_carry_get(aw_outputs out, AW_CONSTANT aw_iparams* ip, aw_lanes l, int c) {
+  real a[AW_LANES];
+  for (int j = 0; j < AW_LANES; ++j)
+    a[j] = AW_LANE_ACTIVE(l, j) ? aw_record_r(out, ip, AW_OUT_CARRY, AW_LANE_RECORD(l, j))[c] : AW_R(0.0);
+  return AW_LOAD_LANES(a);
 }
+
+AW_FN lint aw_carry_geti(aw_outputs out, AW_CONSTANT aw_iparams* ip, aw_lanes l, int c) {
+  aw_i64 a[AW_LANES];
+  for (int j = 0; j < AW_LANES; ++j)
+    a[j] = AW_LANE_ACTIVE(l, j) ? aw_record_i(out, ip, AW_OUT_CARRY, AW_LANE_RECORD(l, j))[c] : 0;
+  return AW_LOAD_ILANES(a);
+}
+
+AW_FN void aw_carry_put(aw_outputs out, AW_CONSTANT aw_iparams* ip, aw_lanes l, int c, lreal v) {
+  real a[AW_LANES];
+  AW_STORE_LANES(v, a);
+  for (int j = 0; j < AW_LANES; ++j)
+    if (AW_LANE_ACTIVE(l, j)) aw_record_r(out, ip, AW_OUT_CARRY, AW_LANE_RECORD(l, j))[c] = a[j];
+}
+
+AW_FN void aw_carry_puti(aw_outputs out, AW_CONSTANT aw_iparams* ip, aw_lanes l, int c, lint v) {
+  aw_i64 a[AW_LANES];
+  AW_STORE_ILANES(v, a);
+  for (int j = 0; j < AW_LANES; ++j)
+    if (AW_LANE_ACTIVE(l, j)) aw_record_i(out, ip, AW_OUT_CARRY, AW_LANE_RECORD(l, j))[c] = a[j];
+}
+
+/* An effect header (effects/aw_fx_<name>.h) declares its place among the
+ * effects on a line of its own, AW_EFFECT_ORDER(<n>): its hooks are called in
+ * increasing n (cmake/ArnoldwebEffects.cmake generates the calls,
+ * effects/aw_effect_hooks.h; docs/design.md, "The effect hooks"). */
+#define AW_EFFECT_ORDER(n)
+
+/* What every effect may read of a lane's life (effects/aw_effects.h keeps it):
+ * the status of each lane, E(0) where an effect asked for it (AW_F_WITH_E0),
+ * and after the run the maximum and the sum of max|dE| over the item's binned
+ * lanes (the energy effect's finish hook adds them). */
+typedef struct {
+  int status[AW_LANES]; /* AW_STATUS_*: a trajectory flagged stays flagged */
+  lreal e0;             /* E(0) */
+  real binned_emax, binned_esum;
+} aw_fx_core;
 
 #endif /* AW_FX_COMMON_H */

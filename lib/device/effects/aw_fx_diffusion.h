@@ -17,6 +17,8 @@
 
 #include "effects/aw_fx_common.h"
 
+AW_EFFECT_ORDER(70)
+
 /* Sample q (0: the start) of the lanes' actions (x, y, z). */
 AW_FN void aw_actions_store(lreal x, lreal y, lreal z, aw_i64 q, aw_lanes l, AW_CONSTANT aw_iparams* ip,
                             aw_outputs out) {
@@ -57,6 +59,44 @@ AW_FN void aw_actions_sample(lreal* asum, const aw_lstate* s, aw_count at, aw_la
     aw_actions_store(asum[0] * w, asum[1] * w, asum[2] * w, q, l, ip, out);
     for (int c = 0; c < 3; ++c) asum[c] = AW_LSPLAT(AW_R(0.0));
   }
+}
+
+typedef struct {
+  lreal asum[3];      /* with averaging: the sum of the actions so far towards the next sample */
+  aw_count sample_at; /* (k + 1) / stride and its remainder after segment k */
+} aw_fx_diffusion_state;
+
+AW_FN void aw_fx_diffusion_begin(aw_config cfg, aw_fx_diffusion_state* me, aw_fx_core* fx, aw_lstate* s, aw_lanes l,
+                                 AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip, aw_outputs out) {
+  for (int c = 0; c < 3; ++c) me->asum[c] = AW_LSPLAT(AW_R(0.0));
+  if (AW_HAS(AW_F_DIFFUSION)) aw_actions_store(s->px, s->py, s->pz, 0, l, ip, out);
+}
+
+AW_FN void aw_fx_diffusion_counts(aw_config cfg, aw_fx_diffusion_state* me, aw_fx_core* fx, aw_i64 seg_first,
+                                  AW_CONSTANT aw_iparams* ip) {
+  if (AW_HAS(AW_F_DIFFUSION)) me->sample_at = aw_count_at(seg_first, ip->diffusion_stride);
+}
+
+AW_FN void aw_fx_diffusion_sample(aw_config cfg, aw_fx_diffusion_state* me, aw_fx_core* fx, const aw_lstate* s,
+                                  aw_lanes l, AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip, aw_outputs out) {
+  if (!AW_HAS(AW_F_DIFFUSION)) return;
+  aw_count_next(&me->sample_at, ip->diffusion_stride);
+  aw_actions_sample(me->asum, s, me->sample_at, l, rp, ip, out);
+}
+
+/* The status at the end: a flagged trajectory is left out of the moments. */
+AW_FN void aw_fx_diffusion_finish(aw_config cfg, aw_fx_diffusion_state* me, aw_fx_core* fx, aw_lstate* s, aw_lanes l,
+                                  AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip, aw_outputs out) {
+  if (!AW_HAS(AW_F_DIFFUSION)) return;
+  for (int j = 0; j < AW_LANES; ++j)
+    if (AW_LANE_ACTIVE(l, j)) aw_record_i(out, ip, AW_OUT_ACTIONS, AW_LANE_RECORD(l, j))[0] = fx->status[j];
+}
+
+/* The running mean restarts at every sample, and with averaging a slice ends
+ * at a sample time (the planner's rule): nothing to carry. */
+AW_FN void aw_fx_diffusion_carry_load(aw_config cfg, aw_fx_diffusion_state* me, aw_fx_core* fx, aw_outputs out,
+                                      AW_CONSTANT aw_iparams* ip, aw_lanes l) {
+  for (int c = 0; c < 3; ++c) me->asum[c] = AW_LSPLAT(AW_R(0.0));
 }
 
 #endif /* AW_FX_DIFFUSION_H */

@@ -44,6 +44,8 @@
 #include "aw_naff.h"
 #include "effects/aw_fx_common.h"
 
+AW_EFFECT_ORDER(60)
+
 /* Reals between a trajectory's consecutive groups of samples (see above). */
 #define AW_FREQ_GROUP_STRIDE (2 * AW_NAFF_GROUP * (aw_u64)AW_SERIES_BLOCK)
 #define AW_FREQ_TAIL_RATE(g) (g)
@@ -191,5 +193,23 @@ AW_FN void aw_freq_analyse(aw_lanes l, AW_CONSTANT aw_rparams* rp, AW_CONSTANT a
     if (AW_LANE_ACTIVE(l, j)) aw_freq_analyse_record(AW_LANE_RECORD(l, j), team, rp, ip, out);
 }
 #endif
+
+typedef struct {
+  aw_count sample_at; /* (k + 1) / stride and its remainder after segment k */
+} aw_fx_frequencies_state;
+
+AW_FN void aw_fx_frequencies_counts(aw_config cfg, aw_fx_frequencies_state* me, aw_fx_core* fx, aw_i64 seg_first,
+                                    AW_CONSTANT aw_iparams* ip) {
+  if (AW_HAS(AW_F_FREQUENCIES)) me->sample_at = aw_count_at(seg_first, ip->frequency_stride);
+}
+
+AW_FN void aw_fx_frequencies_sample(aw_config cfg, aw_fx_frequencies_state* me, aw_fx_core* fx, const aw_lstate* s,
+                                    aw_lanes l, AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip,
+                                    aw_outputs out) {
+  if (!AW_HAS(AW_F_FREQUENCIES)) return;
+  aw_count_next(&me->sample_at, ip->frequency_stride);
+  const aw_i64 q = me->sample_at.q - 1;
+  if (me->sample_at.r == 0 && q < 2 * ip->frequency_samples) aw_freq_sample(s, fx->status, (int)q, l, ip, out);
+}
 
 #endif /* AW_FX_FREQUENCIES_H */

@@ -13,6 +13,8 @@
 
 #include "aw_tangent.h"
 
+AW_EFFECT_ORDER(50)
+
 /* log x for x > 0 finite, NaN otherwise. */
 AW_FN real aw_log_or_nan(real x) { return (x > AW_R(0.0) && x - x == AW_R(0.0)) ? aw_log(x) : aw_nan_real(); }
 
@@ -53,6 +55,80 @@ AW_FN void aw_store_indicators(aw_config cfg, AW_GLOBAL real* out, const aw_tang
   out[AW_IND_MEGNO] = megno;
   out[AW_IND_MEGNO_LYAPUNOV] = lam_y;
   out[AW_IND_LYAPUNOV] = lam;
+}
+
+typedef struct {
+  aw_tangent tangent; /* the tangent vector and its observers */
+} aw_fx_indicators_state;
+
+/* A few stores, whatever the bits: every field is defined for the cpu
+ * backend's run-time bits (and saved by a time slice). */
+AW_FN void aw_fx_indicators_begin(aw_config cfg, aw_fx_indicators_state* me, aw_fx_core* fx, aw_lstate* s,
+                                  aw_lanes l, AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip,
+                                  aw_outputs out) {
+  aw_tangent_begin(&me->tangent, rp);
+}
+
+/* The force at the initial state with the Hessian: 1 where this effect took it. */
+AW_FN int aw_fx_indicators_first_force(aw_config cfg, aw_fx_indicators_state* me, aw_fx_core* fx, aw_lstate* s,
+                                       AW_CONSTANT aw_rparams* rp) {
+  if (!AW_HAS(AW_F_TANGENT)) return 0;
+  aw_tangent_force(s, &me->tangent, rp);
+  return 1;
+}
+
+/* One segment of the steps carrying the tangent vector, in place of the
+ * plain stepper: 1 where this effect took them. */
+AW_FN int aw_fx_indicators_steps(aw_config cfg, aw_fx_indicators_state* me, aw_fx_core* fx, aw_lstate* s,
+                                 aw_i64 nsteps, AW_CONSTANT aw_rparams* rp) {
+  if (!AW_HAS(AW_F_TANGENT)) return 0;
+  aw_segment_tangent(cfg, s, &me->tangent, nsteps, rp);
+  return 1;
+}
+
+AW_FN void aw_fx_indicators_finish(aw_config cfg, aw_fx_indicators_state* me, aw_fx_core* fx, aw_lstate* s,
+                                   aw_lanes l, AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip,
+                                   aw_outputs out) {
+  if (!AW_HAS(AW_F_TANGENT)) return;
+  for (int j = 0; j < AW_LANES; ++j) {
+    if (!AW_LANE_ACTIVE(l, j)) continue;
+    const int st = fx->status[j];
+    aw_store_indicators(cfg, aw_record_r(out, ip, AW_OUT_INDICATORS, AW_LANE_RECORD(l, j)), &me->tangent, j,
+                        st == AW_STATUS_OK || st == AW_STATUS_LEFT_REGION, rp);
+  }
+}
+
+/* The tangent vector and its observers (AW_CARRY_TANGENT + 0 .. 12), the
+ * steps in the last integer; the Hessian comes again with the first force. */
+AW_FN void aw_fx_indicators_carry_save(aw_config cfg, aw_fx_indicators_state* me, aw_fx_core* fx, aw_outputs out,
+                                       AW_CONSTANT aw_iparams* ip, aw_lanes l) {
+  const aw_tangent* t = &me->tangent;
+  const lreal r[13] = {t->qx, t->qy, t->qz, t->px, t->py, t->pz, t->log2w,
+                       t->max_n2, t->s1, t->ysum, t->mean_y, t->cov, t->prev_n2};
+  for (int c = 0; c < 13; ++c) aw_carry_put(out, ip, l, AW_CARRY_TANGENT + c, r[c]);
+  for (int j = 0; j < AW_LANES; ++j)
+    if (AW_LANE_ACTIVE(l, j)) aw_record_i(out, ip, AW_OUT_CARRY, AW_LANE_RECORD(l, j))[AW_CARRY_INTS - 1] = t->steps;
+}
+
+AW_FN void aw_fx_indicators_carry_load(aw_config cfg, aw_fx_indicators_state* me, aw_fx_core* fx, aw_outputs out,
+                                       AW_CONSTANT aw_iparams* ip, aw_lanes l) {
+  aw_tangent* t = &me->tangent;
+  t->qx = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 0);
+  t->qy = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 1);
+  t->qz = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 2);
+  t->px = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 3);
+  t->py = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 4);
+  t->pz = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 5);
+  t->log2w = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 6);
+  t->max_n2 = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 7);
+  t->s1 = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 8);
+  t->ysum = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 9);
+  t->mean_y = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 10);
+  t->cov = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 11);
+  t->prev_n2 = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 12);
+  t->steps = 0;
+  for (int j = 0; j < AW_LANES; ++j)
+    if (AW_LANE_ACTIVE(l, j)) t->steps = aw_record_i(out, ip, AW_OUT_CARRY, AW_LANE_RECORD(l, j))[AW_CARRY_INTS - 1];
 }
 
 #endif /* AW_FX_INDICATORS_H */

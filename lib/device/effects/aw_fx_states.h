@@ -6,6 +6,8 @@
 
 #include "effects/aw_fx_common.h"
 
+AW_EFFECT_ORDER(20)
+
 /* Lane j's position (turns) and momentum into r[0..5]. */
 AW_FN void aw_store_state_reals(AW_GLOBAL real* r, const aw_lstate* s, int j) {
   real a[AW_LANES];
@@ -26,6 +28,26 @@ AW_FN void aw_store_state_ints(AW_GLOBAL aw_i64* i, const aw_lstate* s, int j, i
     i[c] = wa[j];
   }
   i[3] = status;
+}
+
+/* The initial states, after the test hook (order 10) changed them. */
+AW_FN void aw_fx_states_begin(aw_config cfg, aw_fx_core* fx, aw_lstate* s, aw_lanes l, AW_CONSTANT aw_rparams* rp,
+                              AW_CONSTANT aw_iparams* ip, aw_outputs out) {
+  if (!AW_HAS(AW_F_INITIAL_STATES)) return;
+  for (int j = 0; j < AW_LANES; ++j)
+    if (AW_LANE_ACTIVE(l, j))
+      aw_store_state_reals(aw_record_r(out, ip, AW_OUT_INITIAL_STATE, AW_LANE_RECORD(l, j)), s, j);
+}
+
+AW_FN void aw_fx_states_finish(aw_config cfg, aw_fx_core* fx, aw_lstate* s, aw_lanes l, AW_CONSTANT aw_rparams* rp,
+                               AW_CONSTANT aw_iparams* ip, aw_outputs out) {
+  if (!AW_HAS(AW_F_FINAL_STATES)) return;
+  for (int j = 0; j < AW_LANES; ++j) {
+    if (!AW_LANE_ACTIVE(l, j)) continue;
+    const aw_u64 rec = AW_LANE_RECORD(l, j);
+    aw_store_state_reals(aw_record_r(out, ip, AW_OUT_FINAL_STATE, rec), s, j);
+    aw_store_state_ints(aw_record_i(out, ip, AW_OUT_FINAL_STATE, rec), s, j, fx->status[j]);
+  }
 }
 
 #endif /* AW_FX_STATES_H */

@@ -8,6 +8,8 @@
 #include "aw_stepper.h"
 #include "effects/aw_fx_common.h"
 
+AW_EFFECT_ORDER(10) /* first: the injection changes the state every other effect sees */
+
 AW_FN void aw_inject(aw_lstate* s, aw_lanes l, AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip) {
   real tmp[AW_LANES];
   AW_STORE_LANES(s->px, tmp);
@@ -26,6 +28,16 @@ AW_FN void aw_reverse(aw_config cfg, aw_lstate* s, AW_CONSTANT aw_rparams* rp, A
   s->px = -s->px;
   s->py = -s->py;
   s->pz = -s->pz;
+}
+
+AW_FN void aw_fx_testing_begin(aw_config cfg, aw_fx_core* fx, aw_lstate* s, aw_lanes l, AW_CONSTANT aw_rparams* rp,
+                               AW_CONSTANT aw_iparams* ip, aw_outputs out) {
+  if (AW_HAS(AW_F_TEST_INJECT)) aw_inject(s, l, rp, ip);
+}
+
+AW_FN void aw_fx_testing_finish(aw_config cfg, aw_fx_core* fx, aw_lstate* s, aw_lanes l, AW_CONSTANT aw_rparams* rp,
+                                AW_CONSTANT aw_iparams* ip, aw_outputs out) {
+  if (AW_HAS(AW_F_REVERSE)) aw_reverse(cfg, s, rp, ip);
 }
 
 #endif /* AW_FX_TESTING_H */

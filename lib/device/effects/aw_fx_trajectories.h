@@ -10,6 +10,8 @@
 #include "aw_model.h"
 #include "effects/aw_fx_common.h"
 
+AW_EFFECT_ORDER(80)
+
 /* The position of trajectory g among the picks, or -1. */
 AW_FN aw_i64 aw_pick_of(AW_CONSTANT aw_iparams* ip, aw_u64 g) {
   aw_i64 lo = 0, hi = ip->pick_count; /* the pick, if any, is in [lo, hi) */
@@ -56,6 +58,31 @@ AW_FN void aw_trajectories_store(const aw_lstate* s, lreal e0, aw_i64 q, aw_lane
     for (int c = 0; c < AW_PICK_REALS; ++c) *(AW_GLOBAL real*)(at + 2 * c) = r[c][j];
     for (int c = 0; c < AW_PICK_INTS; ++c) *(AW_GLOBAL aw_i64*)(at + 2 * (AW_PICK_REALS + c)) = w[c][j];
   }
+}
+
+typedef struct {
+  aw_count sample_at; /* (k + 1) / stride and its remainder after segment k */
+} aw_fx_trajectories_state;
+
+/* Sample 0, the start (its energy error is 0 by definition: E(0) is not read). */
+AW_FN void aw_fx_trajectories_begin(aw_config cfg, aw_fx_trajectories_state* me, aw_fx_core* fx, aw_lstate* s,
+                                    aw_lanes l, AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip,
+                                    aw_outputs out) {
+  if (AW_HAS(AW_F_TRAJECTORIES)) aw_trajectories_store(s, fx->e0, 0, l, rp, ip, out);
+}
+
+AW_FN void aw_fx_trajectories_counts(aw_config cfg, aw_fx_trajectories_state* me, aw_fx_core* fx, aw_i64 seg_first,
+                                     AW_CONSTANT aw_iparams* ip) {
+  if (AW_HAS(AW_F_TRAJECTORIES)) me->sample_at = aw_count_at(seg_first, ip->pick_stride);
+}
+
+AW_FN void aw_fx_trajectories_sample(aw_config cfg, aw_fx_trajectories_state* me, aw_fx_core* fx,
+                                     const aw_lstate* s, aw_lanes l, AW_CONSTANT aw_rparams* rp,
+                                     AW_CONSTANT aw_iparams* ip, aw_outputs out) {
+  if (!AW_HAS(AW_F_TRAJECTORIES)) return;
+  aw_count_next(&me->sample_at, ip->pick_stride);
+  if (me->sample_at.r == 0 && me->sample_at.q <= ip->pick_samples)
+    aw_trajectories_store(s, fx->e0, me->sample_at.q, l, rp, ip, out);
 }
 
 #endif /* AW_FX_TRAJECTORIES_H */

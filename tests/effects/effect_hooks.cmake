@@ -1,0 +1,67 @@
+# The effects' hooks (cmake/ArnoldwebEffects.cmake): generated in the order
+# each effect header declares (AW_EFFECT_ORDER), never in the order of the
+# names; a header's state and hooks found by their names; a header with hooks
+# and no order, an order twice, two effects at one place, a function named
+# like a hook that is not one, or an order without hooks stop the configure
+# naming the header.
+#   cmake -DSOURCE_DIR=<repo> -P tests/effects/effect_hooks.cmake   (ctest effects.hooks)
+# With -DCASE=<dir> it generates the hooks of the headers in <dir> and prints
+# the generated file (one case).
+cmake_minimum_required(VERSION 3.20)  # the project's policies (IN_LIST)
+if(DEFINED CASE)
+  set(PROJECT_SOURCE_DIR "${SOURCE_DIR}")
+  include("${SOURCE_DIR}/cmake/ArnoldwebEffects.cmake")
+  arnoldweb_effects("${CASE}/out" "${CASE}")
+  file(READ "${CASE}/out/effects/aw_effect_hooks.h" text)
+  message("${text}")
+  return()
+endif()
+
+set(work "${CMAKE_CURRENT_BINARY_DIR}/effect_hooks_test")
+file(REMOVE_RECURSE "${work}")
+set(failed "")
+# effect_case(<name> <0: succeeds, 1: fails> <what the output holds> <effect>=<its header's text, @SEMI@ for ;> ...)
+function(effect_case name must_fail expected)
+  set(dir "${work}/${name}")
+  file(MAKE_DIRECTORY "${dir}")
+  foreach(d IN LISTS ARGN)
+    string(REGEX REPLACE "^([a-z0-9_]+)=.*$" "\\1" effect "${d}")
+    string(REGEX REPLACE "^[a-z0-9_]+=(.*)$" "\\1" text "${d}")
+    string(REPLACE "@SEMI@" ";" text "${text}")  # a list's elements hold no ';'
+    file(WRITE "${dir}/aw_fx_${effect}.h" "/* an effect */\n${text}\n")
+  endforeach()
+  execute_process(COMMAND "${CMAKE_COMMAND}" "-DSOURCE_DIR=${SOURCE_DIR}" "-DCASE=${dir}" -P "${CMAKE_CURRENT_LIST_FILE}"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+  string(REGEX REPLACE "[ \n]+" " " flat "${out}")
+  string(FIND "${flat}" "${expected}" at)
+  if((must_fail AND rc EQUAL 0) OR (NOT must_fail AND NOT rc EQUAL 0) OR at EQUAL -1)
+    set(failed "${failed}\n  ${name}: exit ${rc}, expected \"${expected}\"; got: ${flat}" PARENT_SCOPE)
+  else()
+    message(STATUS "${name}: ${expected}")
+  endif()
+endfunction()
+
+set(zeta_hooks "AW_EFFECT_ORDER(5)\ntypedef struct { lreal x@SEMI@ } aw_fx_zeta_state@SEMI@\nAW_FN void aw_fx_zeta_sample(aw_config cfg, aw_fx_zeta_state* me, aw_fx_core* fx, ...) {}\nAW_FN void aw_fx_zeta_finish(aw_config cfg, aw_fx_zeta_state* me, aw_fx_core* fx, ...) {}")
+set(alpha_hooks "AW_EFFECT_ORDER(20)\nAW_FN void aw_fx_alpha_finish(aw_config cfg, aw_fx_core* fx, ...) {}\nAW_FN int aw_fx_alpha_steps(aw_config cfg, aw_fx_core* fx, ...) { return 0@SEMI@ }")
+# the order declared, not the names': zeta (5) before alpha (20); zeta's state passed, alpha has none
+effect_case(order 0 "aw_fx_zeta_finish(cfg, &fx->zeta, &fx->core, s, l, rp, ip, out); aw_fx_alpha_finish(cfg, &fx->core, s, l, rp, ip, out);"
+            "zeta=${zeta_hooks}" "alpha=${alpha_hooks}")
+effect_case(state 0 "typedef struct { aw_fx_core core; aw_fx_zeta_state zeta; } aw_fx;" "zeta=${zeta_hooks}" "alpha=${alpha_hooks}")
+effect_case(includes 0 "#include \"effects/aw_fx_zeta.h\" #include \"effects/aw_fx_alpha.h\"" "zeta=${zeta_hooks}" "alpha=${alpha_hooks}")
+# a hook no effect has is an empty call list; an int hook is "the first effect that takes it"
+effect_case(empty 0 "AW_FN void aw_fx_effects_window_begin(aw_config cfg, aw_fx* fx) { }" "alpha=${alpha_hooks}")
+effect_case(taken 0 "return 0 || aw_fx_alpha_steps(cfg, &fx->core, s, nsteps, rp);" "alpha=${alpha_hooks}")
+# a helper (no order, no hook) is no effect
+effect_case(helper 0 "#include \"effects/aw_fx_alpha.h\" /* What" "alpha=${alpha_hooks}" "common=AW_FN void aw_helper(void) {}")
+effect_case(no-order 1 "aw_fx_new.h: an effect declares its place once" "new=AW_FN void aw_fx_new_sample(aw_config cfg) {}")
+effect_case(twice 1 "aw_fx_new.h: an effect declares its place once"
+            "new=AW_EFFECT_ORDER(1)\nAW_EFFECT_ORDER(2)\nAW_FN void aw_fx_new_sample(aw_config cfg) {}")
+effect_case(clash 1 "both declare AW_EFFECT_ORDER(20)" "alpha=${alpha_hooks}"
+            "beta=AW_EFFECT_ORDER(20)\nAW_FN void aw_fx_beta_sample(aw_config cfg) {}")
+effect_case(not-a-hook 1 "aw_fx_new_smaple is not a hook (the hooks: begin, first_force"
+            "new=AW_EFFECT_ORDER(3)\nAW_FN void aw_fx_new_smaple(aw_config cfg) {}")
+effect_case(no-hook 1 "aw_fx_new.h: AW_EFFECT_ORDER without a hook" "new=AW_EFFECT_ORDER(3)\nAW_FN void aw_new_helper(void) {}")
+file(REMOVE_RECURSE "${work}")
+if(failed)
+  message(FATAL_ERROR "effect hooks:${failed}")
+endif()
