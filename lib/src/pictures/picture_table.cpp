@@ -1,32 +1,37 @@
 // arnoldweb: the picture table (picture_table.hpp).
 #include "pictures/picture_table.hpp"
 
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <utility>
+
 #include "arnoldweb/errors.hpp"
 #include "output_table/output_table.hpp"
 
 namespace arnoldweb::detail {
 
-// The rows' draw functions (PictureRow::draw), each where its picture is drawn.
-bool draw_map_and_fli(const Plan& plan, const Result& r, const Records& rec, const std::string& path);  // render_indicators.cpp
-bool draw_frequency_map(const Plan& plan, const Result& r, const Records& rec, const std::string& path);  // render_analyses.cpp
-bool draw_diffusion_index(const Plan& plan, const Result& r, const Records& rec, const std::string& path);
-bool draw_diffusion(const Plan& plan, const Result& r, const Records& rec, const std::string& path);
-bool draw_orbits(const Plan& plan, const Result& r, const Records& rec, const std::string& path);
-
-const std::vector<PictureRow>& picture_rows() {
-  static const std::vector<PictureRow> rows = {
-      // the velocity map beside the FLI of a healpix grid (observe.fli)
-      {"map_and_fli", "map_and_fli.png", true, draw_map_and_fli},
-      // every trajectory at its first window's (nu_x, nu_y), coloured by its diffusion index
-      {"frequency_map", "frequency_map.png", false, draw_frequency_map},
-      {"diffusion_index", "diffusion_index.png", true, draw_diffusion_index},
-      // the variance of the actions along and across the resonance with the fit of D
-      {"diffusion", "diffusion.png", false, draw_diffusion},
-      // the picked orbits: momentum, direction and energy error
-      {"orbits", "trajectories.png", false, draw_orbits},
-  };
+namespace {
+// The registered rows, by name: built on first use, so that the registrations
+// of every translation unit find it whatever their order of initialisation.
+std::vector<PictureRow>& registered_rows() {
+  static std::vector<PictureRow> rows;
   return rows;
 }
+}  // namespace
+
+PictureRegistration::PictureRegistration(PictureRow row) {
+  std::vector<PictureRow>& rows = registered_rows();
+  if (find_picture(row.name)) {  // a programming error: every test that opens the plugin stops here
+    std::fprintf(stderr, "arnoldweb pictures plugin: two pictures are registered as \"%s\"\n", row.name.c_str());
+    std::abort();
+  }
+  const auto at = std::upper_bound(rows.begin(), rows.end(), row.name,
+                                   [](const std::string& name, const PictureRow& r) { return name < r.name; });
+  rows.insert(at, std::move(row));
+}
+
+const std::vector<PictureRow>& picture_rows() { return registered_rows(); }
 
 const PictureRow* find_picture(const std::string& name) {
   for (const PictureRow& p : picture_rows())

@@ -6,8 +6,9 @@
 // draws the pictures the output table's datasets name over a grid of initial
 // conditions (RecordDataset::picture) and then, for every output the run wrote,
 // the rows its output row names.
-// Adding a picture of an output: its draw function (in a render_*.cpp here), its
-// row in picture_table.cpp, and its name in the output's row.
+// Adding a picture of an output: its draw function and its row, registered
+// beside it (a namespace-scope `const PictureRegistration`), in a render_*.cpp
+// here (every .cpp here is the plugin's), and its name in the output's row.
 #pragma once
 
 #include <string>
@@ -25,6 +26,12 @@ struct PictureRow {
   // Draws the output's records (at least one) into `path`; false: the run
   // holds nothing it draws (e.g. an analysis that was not made). Throws OutputError.
   bool (*draw)(const Plan& plan, const Result& result, const Records& records, const std::string& path) = nullptr;
+};
+
+// A row of the table, registered where its function draws (static
+// initialisation of the plugin); the table holds every registered row, by name.
+struct PictureRegistration {
+  explicit PictureRegistration(PictureRow row);
 };
 
 const std::vector<PictureRow>& picture_rows();

@@ -1,6 +1,6 @@
 // arnoldweb: the pictures of the analyses (analysis_files.hpp,
-// docs/frequencies.md) and of the picked orbits: rows of the picture table
-// (picture_table.cpp).
+// docs/frequencies.md) and of the picked orbits, each registered here as a row
+// of the picture table (picture_table.hpp).
 //  frequency_map.png  every trajectory as a point (nu_x, nu_y) of its first
 //                     window, coloured by its diffusion index log10 |dnu|;
 //                     where points share a pixel the largest index shows, so
@@ -244,8 +244,6 @@ void render_trajectories(const Plan& plan, const Result& r, const Records& rec, 
   c.save(path);
 }
 
-}  // namespace
-
 bool draw_frequency_map(const Plan& plan, const Result& r, const Records& rec, const std::string& path) {
   render_frequency_map(plan, r, rec, path);
   return true;
@@ -269,5 +267,15 @@ bool draw_orbits(const Plan& plan, const Result& r, const Records& rec, const st
   render_trajectories(plan, r, rec, path);
   return true;
 }
+
+}  // namespace
+
+// every trajectory at its first window's (nu_x, nu_y), coloured by its diffusion index
+const PictureRegistration frequency_map_row({"frequency_map", "frequency_map.png", false, draw_frequency_map});
+const PictureRegistration diffusion_index_row({"diffusion_index", "diffusion_index.png", true, draw_diffusion_index});
+// the variance of the actions along and across the resonance with the fit of D
+const PictureRegistration diffusion_row({"diffusion", "diffusion.png", false, draw_diffusion});
+// the picked orbits: momentum, direction and energy error
+const PictureRegistration orbits_row({"orbits", "trajectories.png", false, draw_orbits});
 
 }  // namespace arnoldweb::detail

@@ -194,6 +194,7 @@ void write_grid_picture(const Plan& plan, const Result& r, const std::string& pa
   }
 }
 
+namespace {
 bool draw_map_and_fli(const Plan& plan, const Result& r, const Records& ind, const std::string& path) {
   const Scene& s = plan.scene;
   if (!s.observes("observe.fli") || ind.reals.empty() || s.grid_kind != "healpix" || r.map.empty() || r.nside <= 0)
@@ -202,6 +203,10 @@ bool draw_map_and_fli(const Plan& plan, const Result& r, const Records& ind, con
                      picture_caption(r));
   return true;
 }
+}  // namespace
+
+// the velocity map beside the FLI of a healpix grid (observe.fli)
+const PictureRegistration map_and_fli_row({"map_and_fli", "map_and_fli.png", true, draw_map_and_fli});
 
 void write_dataset_pictures(const Plan& plan, const Result& r, const std::string& dir, std::vector<std::string>& names) {
   if (plan.scene.initial != "grid") return;
