@@ -5,9 +5,10 @@
  * real, aw_iparams: aw_i64), so its layout is an array of that type in every
  * dialect: the host fills the double block and converts it to float element
  * by element for float kernels. The host includes this header twice, with
- * `real` = double and float (lib/src/plan/kernel_params.hpp);
- * tests/plan/test_kernel_params.cpp checks sizes and offsets on the host and,
- * through PoCL, in OpenCL C.
+ * `real` = double and float (lib/src/params/kernel_params.hpp, whose
+ * static_asserts check the layouts). An effect's members are its header's
+ * (AW_FX_<NAME>_RPARAMS, _IPARAMS), gathered by AW_EFFECTS_RPARAMS and
+ * AW_EFFECTS_IPARAMS (effects/aw_effect_declarations.h).
  *
  * Needs `real`, `aw_i64` and `aw_u32` (aw_dialect.h, or the host's own).
  */
@@ -53,8 +54,6 @@ typedef struct {
 
 typedef struct {
   real energy;        /* E of every trajectory */
-  real energy_limit;  /* flag when |dE| exceeds this */
-  real inject_value;  /* test hook: value added to p_x (NaN, Inf) */
   real kick_merged;   /* (b_last + b_0) h, for back-to-back steps */
   real drift[AW_MAX_STAGES + 1]; /* a_i h / 2pi (turns per unit momentum) */
   real kick[AW_MAX_STAGES + 1];  /* b_i h */
@@ -63,17 +62,12 @@ typedef struct {
   aw_cap cap;
   aw_box box;
   aw_gaussian gaussian;
-  aw_region zoom;
-  aw_region confine;
   real model[AW_MAX_MODEL_PARAMS]; /* the model's own (models/aw_models.h) */
-  /* chaos indicators and grids of initial conditions (docs/indicators.md) */
-  real tangent_w0[6];   /* initial tangent vector (dX in radians, dP), unit norm */
-  real tangent_step;    /* h in T: indicator times and exponents are in T */
+  /* grids of initial conditions (docs/indicators.md) */
   real grid_position[3]; /* the fixed position of grid initial conditions, turns */
   real grid_lo[2], grid_width[2]; /* plane: momentum ranges; lonlat: lon, lat ranges in turns */
   real grid_fixed;      /* plane: the third momentum */
-  real frequency_every; /* T between two frequency samples */
-  real diffusion_average_weight; /* 1 / the actions averaged into a sample (effects/aw_fx_diffusion.h) */
+  AW_EFFECTS_RPARAMS    /* each effect's (its header's AW_FX_<NAME>_RPARAMS) */
 } aw_rparams;
 
 /* --------------------------------------------------- integer parameters */
@@ -81,32 +75,13 @@ typedef struct {
   aw_i64 seed;              /* Philox key */
   aw_i64 steps_per_segment; /* steps between two samples */
   aw_i64 segments;          /* samples per averaging window */
-  aw_i64 energy_stride;     /* segments between energy samples (1: every segment) */
   aw_i64 windows;           /* averaging windows per trajectory */
-  aw_i64 nside;             /* HEALPix resolution of the velocity map */
   aw_i64 max_attempts;      /* rejection-sampling bound for initial states */
-  aw_i64 inject_index;      /* test hook: the trajectory to poison */
-  aw_i64 zoom_resolution;   /* zoom histogram: R x R bins */
-  aw_i64 frames;            /* number of frames F (1 without AW_F_FRAMES) */
-  aw_i64 frame_bounds[AW_MAX_FRAMES + 1]; /* frame k = windows [b_k, b_k+1) */
   /* grids of initial conditions (AW_INITIAL_GRID, aw_grid.h) */
   aw_i64 grid_kind;         /* AW_GRID_* */
   aw_i64 grid_n[2];         /* healpix: nside, 0; lonlat: n_lon, n_lat; plane: n1, n2 */
   aw_i64 grid_axes[3];      /* plane: the two gridded momenta, then the fixed one */
-  /* frequency analysis (effects/aw_fx_frequencies.h) and action samples (effects/aw_fx_diffusion.h) */
-  aw_i64 frequency_stride;  /* segments between frequency samples */
-  aw_i64 frequency_samples; /* n: samples per window (two windows) */
-  aw_i64 frequency_order;   /* p of Laskar's window chi_p */
-  aw_i64 diffusion_stride;  /* segments between action samples */
-  aw_i64 diffusion_samples; /* K: action samples after t = 0 */
-  aw_i64 diffusion_average_points; /* actions averaged into a sample (0: the actions at the sample time) */
-  aw_i64 diffusion_average_stride; /* segments between two of them */
-  /* the sampled states of picked trajectories (effects/aw_fx_trajectories.h) */
-  aw_i64 pick_count;        /* picked trajectories: pick_ids[0 .. pick_count), increasing */
-  aw_i64 pick_stride;       /* segments between two samples */
-  aw_i64 pick_samples;      /* S: samples after t = 0 */
-  aw_i64 pick_base;         /* their first word in the histogram buffer (even) */
-  aw_i64 pick_ids[AW_MAX_PICKS];
+  AW_EFFECTS_IPARAMS        /* each effect's (its header's AW_FX_<NAME>_IPARAMS) */
   /* per-trajectory work memory in the series buffer (AW_BUFFERS): series_reals
    * reals per trajectory, in blocks of AW_SERIES_BLOCK trajectories */
   aw_i64 series_reals;

@@ -3,43 +3,19 @@
  * (aw_param_blocks.h), the counter slots and the state records. Plain macros:
  * the host includes this header as it is.
  *
- * A new effect adds a bit and its counters here, and its fields in
- * aw_param_blocks.h.
+ * A new effect declares its bits, its record slot, its sizes and its
+ * parameters in its own header (effects/aw_fx_<name>.h, its declarations
+ * block), gathered here by the generated effects/aw_effect_declarations.h.
  */
 #ifndef AW_PARAMS_H
 #define AW_PARAMS_H
 
 /* ---------------------------------------------------------------- features
  * One bit per optional effect. The OpenCL and CUDA kernels are compiled with
- * -DAW_FEATURES=<mask>, so an effect that is not asked for is not in the code. */
-#define AW_F_VELOCITY_MAP 0x1u    /* bin averaged velocities on the sphere */
-#define AW_F_ENERGY 0x2u          /* track |E(t) - E(0)| at every sample */
-#define AW_F_ENERGY_LIMIT 0x4u    /* flag trajectories above a threshold */
-#define AW_F_INITIAL_STATES 0x8u  /* write initial states */
-#define AW_F_FINAL_STATES 0x10u   /* write final states */
-#define AW_F_TEST_INJECT 0x20u    /* test hook: poison one trajectory */
-#define AW_F_ZOOM 0x40u           /* gnomonic high-resolution histogram of a region */
-#define AW_F_CONFINE 0x80u        /* only trajectories that stay in a region count */
-#define AW_F_FRAMES 0x100u        /* one velocity map per span of windows (time series) */
-#define AW_F_REVERSE 0x200u       /* test of time reversibility: after the run, flip P,
-                                     integrate as long again, flip P back (final states) */
-/* chaos indicators (docs/indicators.md): the tangent vector through the
- * derivative of the same step, and its observers, each only when asked */
-#define AW_F_TANGENT 0x400u       /* tangent dynamics (any indicator sets it) */
-#define AW_F_FLI 0x800u           /* fast Lyapunov indicator: max_t log |w| */
-#define AW_F_MEGNO 0x1000u        /* mean MEGNO <Y> and the Lyapunov exponent from its slope */
-#define AW_F_LYAPUNOV 0x2000u     /* finite-time maximal Lyapunov exponent log |w(t)| / t */
-/* open runs (docs/scenes.md, "Open runs"): a launch may start trajectories
- * from states given in their records (ensemble.initial = "file") and stop
- * them at a time slice, leaving in their records all it needs to go on */
-#define AW_F_CARRY 0x4000u
-/* frequency analysis (NAFF) over two windows, and action samples for
- * diffusion (docs/frequencies.md) */
-#define AW_F_FREQUENCIES 0x8000u
-#define AW_F_DIFFUSION 0x10000u
-/* the sampled states of chosen trajectories (observe.trajectories) */
-#define AW_F_TRAJECTORIES 0x20000u
-#define AW_F_ALL 0x3ffffu
+ * -DAW_FEATURES=<mask>, so an effect that is not asked for is not in the code.
+ * Each effect's bits are in its header's declarations block
+ * (effects/aw_fx_<name>.h); the generated effects/aw_effect_declarations.h,
+ * included at the end, gathers them and defines AW_F_ALL. */
 /* the effects that read E(0) of a trajectory (aw_fx_core.e0) */
 #define AW_F_WITH_E0 (AW_F_ENERGY | AW_F_TRAJECTORIES)
 
@@ -59,7 +35,6 @@
  * The structs the host fills and every kernel reads: aw_param_blocks.h. */
 #define AW_MAX_STAGES 16
 #define AW_MAX_MODEL_PARAMS 192 /* fourier: 7 + 5 x 32 harmonics (models/aw_fourier.h) */
-#define AW_MAX_FRAMES 64
 
 /* ------------------------------------------------------- histograms
  * One buffer of counts: F velocity maps of 12 nside^2 pixels (RING), frame
@@ -86,45 +61,13 @@
  * host's output table (lib/src/plan/output_table.cpp) owns a slot and its
  * columns in the trajectory's record of reals and record of integers; the
  * host lays the columns out (aw_iparams.rec_col_r, rec_col_i) for the
- * outputs a plan asks for, and a kernel writes only those. */
-#define AW_OUT_INITIAL_STATE 0 /* AW_STATE_REALS reals */
-#define AW_OUT_FINAL_STATE 1   /* AW_STATE_REALS reals, AW_STATE_INTS integers */
-#define AW_OUT_INDICATORS 2    /* AW_IND_REALS reals */
-#define AW_OUT_CARRY 3         /* AW_CARRY_REALS reals, AW_CARRY_INTS integers: in and out */
-#define AW_OUT_FREQUENCIES 4   /* AW_FREQ_REALS reals (effects/aw_fx_frequencies.h) */
-#define AW_OUT_ACTIONS 5       /* 3 (K + 1) reals, 1 integer (effects/aw_fx_diffusion.h) */
-#define AW_OUT_TRAJECTORIES 6  /* picked: AW_PICK_REALS reals, AW_PICK_INTS integers per sample (effects/aw_fx_trajectories.h) */
-#define AW_FREQ_REALS 7
-/* A frequency pass over a window's samples is shared by a team of
- * AW_NAFF_TEAM members (aw_naff.h): member t takes samples t, t + T, ...;
- * a window holds its samples padded with zeros to a multiple of the team. */
-#define AW_NAFF_TEAM 32
-#define AW_NAFF_PADDED(n) ((((n) + AW_NAFF_TEAM - 1) / AW_NAFF_TEAM) * AW_NAFF_TEAM)
-/* ... and stored in groups of AW_NAFF_GROUP consecutive samples (64 bytes in
- * double: what a GPU's memory delivers at once; aw_naff.h, "teams"). */
-#define AW_NAFF_GROUP 4
-/* The frequencies' work memory per trajectory (series buffer) for windows of
- * n samples: both windows' samples (padded), the mean rates, a flag, and one
- * real unused so that every trajectory's series starts 32 bytes apart
- * (effects/aw_fx_frequencies.h). */
-#define AW_FREQ_SERIES_REALS(n) (12 * AW_NAFF_PADDED(n) + 8)
+ * outputs a plan asks for, and a kernel writes only those. Each output's
+ * slot AW_OUT_<NAME> (below AW_OUT_SLOTS) and its sizes are in its effect
+ * header's declarations block (effects/aw_fx_<name>.h). */
+#define AW_OUT_SLOTS 8
 /* The series buffer is allocated in blocks of this many trajectories (the
  * kernels store every lane of a group; every lane width divides it). */
 #define AW_SERIES_BLOCK 32
-#define AW_OUT_SLOTS 8
-
-/* Picked records (observe.trajectories): a record per sample of each picked
- * trajectory (at most AW_MAX_PICKS, ip->pick_ids), not per trajectory: they
- * lie in the histogram buffer after the maps and the zoom, from word
- * ip->pick_base on, each value in two 32-bit words (a real's bits in the
- * kernel's precision, low word first; an integer's 64 bits), written once by
- * the trajectory's work-item and folded, summed and checkpointed with the
- * counts (only the trajectory's own launch writes a nonzero word: the sums
- * are its bits). Record (k, q) of pick k, sample q: u_x u_y u_z (turns,
- * wrapped) p_x p_y p_z E(t) - E(0) | winding x y z. */
-#define AW_MAX_PICKS 1024
-#define AW_PICK_REALS 7
-#define AW_PICK_INTS 3
 
 /* A state: 6 reals (u_x, u_y, u_z in turns, wrapped; p_x, p_y, p_z) and 4
  * integers (winding x, y, z; status). */
@@ -150,15 +93,6 @@
 #define AW_CARRY_CONFINE 9  /* the confine effect's inside */
 #define AW_CARRY_WINDOW 10
 #define AW_CARRY_TANGENT 13
-
-/* The chaos indicators of a trajectory (NaN for a flagged one): FLI, mean
- * MEGNO <Y>, the Lyapunov exponent from MEGNO's slope (1/T), the finite-time
- * Lyapunov exponent (1/T). */
-#define AW_IND_REALS 4
-#define AW_IND_FLI 0
-#define AW_IND_MEGNO 1
-#define AW_IND_MEGNO_LYAPUNOV 2
-#define AW_IND_LYAPUNOV 3
 
 /* ------------------------------------------------------- kernel buffers
  * The ensemble kernel's buffers in argument order, written once: the OpenCL
@@ -192,5 +126,10 @@ enum { AW_BUFFERS(AW_BUF_ENUM) AW_BUF_COUNT };
 /* Energy statistics: every work-group writes (max, sum) of max|dE| over its
  * binned trajectories; the host reduces the groups in index order. */
 #define AW_GROUP_STATS 2
+
+/* ------------------------------------------------------- the effects
+ * Their bits, slots, sizes and parameters, from their headers (generated by
+ * cmake/ArnoldwebEffects.cmake). */
+#include "effects/aw_effect_declarations.h"
 
 #endif /* AW_PARAMS_H */

@@ -3,17 +3,19 @@
 # names; a header's state and hooks found by their names; a header with hooks
 # and no order, an order twice, two effects at one place, a function named
 # like a hook that is not one, or an order without hooks stop the configure
-# naming the header.
+# naming the header; the declarations blocks gathered (the bits' union, the
+# parameters), a bit that is not one and a bit or a slot taken twice refused.
 #   cmake -DSOURCE_DIR=<repo> -P tests/effects/effect_hooks.cmake   (ctest effects.hooks)
 # With -DCASE=<dir> it generates the hooks of the headers in <dir> and prints
-# the generated file (one case).
+# the generated files (one case).
 cmake_minimum_required(VERSION 3.20)  # the project's policies (IN_LIST)
 if(DEFINED CASE)
   set(PROJECT_SOURCE_DIR "${SOURCE_DIR}")
   include("${SOURCE_DIR}/cmake/ArnoldwebEffects.cmake")
   arnoldweb_effects("${CASE}/out" "${CASE}")
   file(READ "${CASE}/out/effects/aw_effect_hooks.h" text)
-  message("${text}")
+  file(READ "${CASE}/out/effects/aw_effect_declarations.h" declarations)
+  message("${text}${declarations}")
   return()
 endif()
 
@@ -61,6 +63,29 @@ effect_case(clash 1 "both declare AW_EFFECT_ORDER(20)" "alpha=${alpha_hooks}"
 effect_case(not-a-hook 1 "aw_fx_new_smaple is not a hook (the hooks: begin, first_force"
             "new=AW_EFFECT_ORDER(3)\nAW_FN void aw_fx_new_smaple(aw_config cfg) {}")
 effect_case(no-hook 1 "aw_fx_new.h: AW_EFFECT_ORDER without a hook" "new=AW_EFFECT_ORDER(3)\nAW_FN void aw_new_helper(void) {}")
+# the declarations blocks: the bits' union, the parameters' members; a bit that is not one, or a
+# bit or a slot taken twice, stop the configure naming both headers
+macro(declared effect lines)
+  string(TOUPPER "${effect}" up)
+  set(decl_${effect} "#ifndef AW_FX_${up}_DECLARATIONS\n#define AW_FX_${up}_DECLARATIONS\n${lines}\n#endif\n${alpha_hooks}")
+  string(REPLACE "alpha" "${effect}" decl_${effect} "${decl_${effect}}")
+endmacro()
+declared(alpha "#define AW_F_ALPHA 0x2u\n#define AW_OUT_ALPHA 1\n#define AW_FX_ALPHA_IPARAMS aw_i64 alpha_n@SEMI@")
+declared(gamma "#define AW_F_GAMMA 0x8u /* its comment */\n#define AW_FX_GAMMA_RPARAMS real gamma_x@SEMI@")
+string(REPLACE "AW_EFFECT_ORDER(20)" "AW_EFFECT_ORDER(30)" decl_gamma "${decl_gamma}")
+effect_case(bits 0 "#define AW_F_ALL (AW_F_ALPHA | AW_F_GAMMA)" "alpha=${decl_alpha}" "gamma=${decl_gamma}")
+effect_case(params 0 "#define AW_EFFECTS_RPARAMS AW_FX_GAMMA_RPARAMS #define AW_EFFECTS_IPARAMS AW_FX_ALPHA_IPARAMS"
+            "alpha=${decl_alpha}" "gamma=${decl_gamma}")
+effect_case(slot-check 0 "#if AW_OUT_ALPHA >= AW_OUT_SLOTS" "alpha=${decl_alpha}")
+declared(beta "#define AW_F_BETA 0x6u")
+string(REPLACE "AW_EFFECT_ORDER(20)" "AW_EFFECT_ORDER(40)" decl_beta "${decl_beta}")
+effect_case(not-one-bit 1 "aw_fx_beta.h: AW_F_BETA 0x6 is not one bit" "beta=${decl_beta}")
+declared(beta "#define AW_F_BETA 0x2u")
+string(REPLACE "AW_EFFECT_ORDER(20)" "AW_EFFECT_ORDER(40)" decl_beta "${decl_beta}")
+effect_case(bit-twice 1 "AW_F_BETA is 0x2, the bit of AW_F_ALPHA (aw_fx_alpha.h)" "alpha=${decl_alpha}" "beta=${decl_beta}")
+declared(beta "#define AW_F_BETA 0x10u\n#define AW_OUT_BETA 1")
+string(REPLACE "AW_EFFECT_ORDER(20)" "AW_EFFECT_ORDER(40)" decl_beta "${decl_beta}")
+effect_case(slot-twice 1 "AW_OUT_BETA is slot 1, that of AW_OUT_ALPHA (aw_fx_alpha.h)" "alpha=${decl_alpha}" "beta=${decl_beta}")
 file(REMOVE_RECURSE "${work}")
 if(failed)
   message(FATAL_ERROR "effect hooks:${failed}")

@@ -2,7 +2,23 @@
  * averaging window, the direction of the averaged velocity (the displacement
  * over the window) is counted in the HEALPix map of the window's frame, and
  * in the R x R gnomonic zoom histogram when it falls inside its square. */
-#ifndef AW_FX_BINNING_H
+/* What the host reads too (plain macros, gathered by the generated
+ * effects/aw_effect_declarations.h that aw_params.h includes). */
+#ifndef AW_FX_BINNING_DECLARATIONS
+#define AW_FX_BINNING_DECLARATIONS
+#define AW_F_VELOCITY_MAP 0x1u /* bin averaged velocities on the sphere */
+#define AW_F_ZOOM 0x40u        /* gnomonic high-resolution histogram of a region */
+#define AW_F_FRAMES 0x100u     /* one velocity map per span of windows (time series) */
+#define AW_MAX_FRAMES 64
+#define AW_FX_BINNING_RPARAMS aw_region zoom;
+#define AW_FX_BINNING_IPARAMS                                                                   \
+  aw_i64 nside;           /* HEALPix resolution of the velocity map */                            \
+  aw_i64 zoom_resolution; /* zoom histogram: R x R bins */                                        \
+  aw_i64 frames;          /* number of frames F (1 without AW_F_FRAMES) */                        \
+  aw_i64 frame_bounds[AW_MAX_FRAMES + 1]; /* frame k = windows [b_k, b_k+1) */
+#endif
+
+#if !defined(AW_EFFECT_DECLARATIONS_ONLY) && !defined(AW_FX_BINNING_H)
 #define AW_FX_BINNING_H
 
 #include "aw_healpix.h"

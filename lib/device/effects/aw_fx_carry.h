@@ -10,7 +10,18 @@
  *   - ensemble.initial = "file" starts from the state the host put in the
  *     record (position, momentum, windings, status).
  * Per lane; idle lanes read zeros and write nothing. */
-#ifndef AW_FX_CARRY_H
+/* What the host reads too (plain macros, gathered by the generated
+ * effects/aw_effect_declarations.h that aw_params.h includes). */
+#ifndef AW_FX_CARRY_DECLARATIONS
+#define AW_FX_CARRY_DECLARATIONS
+/* open runs (docs/scenes.md, "Open runs"): a launch may start trajectories
+ * from states given in their records (ensemble.initial = "file") and stop
+ * them at a time slice, leaving in their records all it needs to go on */
+#define AW_F_CARRY 0x4000u
+#define AW_OUT_CARRY 3 /* AW_CARRY_REALS reals, AW_CARRY_INTS integers: in and out (aw_params.h) */
+#endif
+
+#if !defined(AW_EFFECT_DECLARATIONS_ONLY) && !defined(AW_FX_CARRY_H)
 #define AW_FX_CARRY_H
 
 #include "effects/aw_effects.h"

@@ -2,7 +2,15 @@
  * momentum stays in a gnomonic square region of directions count; one that
  * leaves it at a sample is flagged AW_STATUS_LEFT_REGION at the end of its
  * window and binned no more. */
-#ifndef AW_FX_CONFINE_H
+/* What the host reads too (plain macros, gathered by the generated
+ * effects/aw_effect_declarations.h that aw_params.h includes). */
+#ifndef AW_FX_CONFINE_DECLARATIONS
+#define AW_FX_CONFINE_DECLARATIONS
+#define AW_F_CONFINE 0x80u /* only trajectories that stay in a region count */
+#define AW_FX_CONFINE_RPARAMS aw_region confine;
+#endif
+
+#if !defined(AW_EFFECT_DECLARATIONS_ONLY) && !defined(AW_FX_CONFINE_H)
 #define AW_FX_CONFINE_H
 
 #include "effects/aw_fx_common.h"

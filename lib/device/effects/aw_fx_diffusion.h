@@ -12,7 +12,21 @@
  * fast oscillations and the libration in a resonance average out. The sum
  * restarts at every sample, so a time slice that ends at a sample time
  * carries nothing (the planner asks for that). */
-#ifndef AW_FX_DIFFUSION_H
+/* What the host reads too (plain macros, gathered by the generated
+ * effects/aw_effect_declarations.h that aw_params.h includes). */
+#ifndef AW_FX_DIFFUSION_DECLARATIONS
+#define AW_FX_DIFFUSION_DECLARATIONS
+#define AW_F_DIFFUSION 0x10000u /* action samples for diffusion (docs/frequencies.md) */
+#define AW_OUT_ACTIONS 5        /* 3 (K + 1) reals, 1 integer */
+#define AW_FX_DIFFUSION_RPARAMS real diffusion_average_weight; /* 1 / the actions averaged into a sample */
+#define AW_FX_DIFFUSION_IPARAMS                                                                   \
+  aw_i64 diffusion_stride;         /* segments between action samples */                          \
+  aw_i64 diffusion_samples;        /* K: action samples after t = 0 */                            \
+  aw_i64 diffusion_average_points; /* actions averaged into a sample (0: the actions at the sample time) */ \
+  aw_i64 diffusion_average_stride; /* segments between two of them */
+#endif
+
+#if !defined(AW_EFFECT_DECLARATIONS_ONLY) && !defined(AW_FX_DIFFUSION_H)
 #define AW_FX_DIFFUSION_H
 
 #include "effects/aw_fx_common.h"

@@ -2,7 +2,17 @@
  * every sample; its maximum per trajectory goes into a log2 histogram and the
  * work-group statistics; above observe.max_energy_error a trajectory is
  * flagged at the end of the window. */
-#ifndef AW_FX_ENERGY_H
+/* What the host reads too (plain macros, gathered by the generated
+ * effects/aw_effect_declarations.h that aw_params.h includes). */
+#ifndef AW_FX_ENERGY_DECLARATIONS
+#define AW_FX_ENERGY_DECLARATIONS
+#define AW_F_ENERGY 0x2u       /* track |E(t) - E(0)| at every sample */
+#define AW_F_ENERGY_LIMIT 0x4u /* flag trajectories above a threshold */
+#define AW_FX_ENERGY_RPARAMS real energy_limit; /* flag when |dE| exceeds this */
+#define AW_FX_ENERGY_IPARAMS aw_i64 energy_stride; /* segments between energy samples (1: every segment) */
+#endif
+
+#if !defined(AW_EFFECT_DECLARATIONS_ONLY) && !defined(AW_FX_ENERGY_H)
 #define AW_FX_ENERGY_H
 
 #include "aw_model.h"

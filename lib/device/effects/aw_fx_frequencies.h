@@ -38,7 +38,33 @@
  * of the first window, those of the second, and ||nu(2)| - |nu(1)|| (the
  * host writes its log10, the diffusion index); NaN where the trajectory was
  * flagged, or the search found no maximum. */
-#ifndef AW_FX_FREQUENCIES_H
+/* What the host reads too (plain macros, gathered by the generated
+ * effects/aw_effect_declarations.h that aw_params.h includes). */
+#ifndef AW_FX_FREQUENCIES_DECLARATIONS
+#define AW_FX_FREQUENCIES_DECLARATIONS
+#define AW_F_FREQUENCIES 0x8000u /* frequency analysis (NAFF) over two windows (docs/frequencies.md) */
+#define AW_OUT_FREQUENCIES 4     /* AW_FREQ_REALS reals */
+#define AW_FREQ_REALS 7
+/* A frequency pass over a window's samples is shared by a team of
+ * AW_NAFF_TEAM members (aw_naff.h): member t takes samples t, t + T, ...;
+ * a window holds its samples padded with zeros to a multiple of the team. */
+#define AW_NAFF_TEAM 32
+#define AW_NAFF_PADDED(n) ((((n) + AW_NAFF_TEAM - 1) / AW_NAFF_TEAM) * AW_NAFF_TEAM)
+/* ... and stored in groups of AW_NAFF_GROUP consecutive samples (64 bytes in
+ * double: what a GPU's memory delivers at once; aw_naff.h, "teams"). */
+#define AW_NAFF_GROUP 4
+/* The frequencies' work memory per trajectory (series buffer) for windows of
+ * n samples: both windows' samples (padded), the mean rates, a flag, and one
+ * real unused so that every trajectory's series starts 32 bytes apart. */
+#define AW_FREQ_SERIES_REALS(n) (12 * AW_NAFF_PADDED(n) + 8)
+#define AW_FX_FREQUENCIES_RPARAMS real frequency_every; /* T between two frequency samples */
+#define AW_FX_FREQUENCIES_IPARAMS                                         \
+  aw_i64 frequency_stride;  /* segments between frequency samples */      \
+  aw_i64 frequency_samples; /* n: samples per window (two windows) */     \
+  aw_i64 frequency_order;   /* p of Laskar's window chi_p */
+#endif
+
+#if !defined(AW_EFFECT_DECLARATIONS_ONLY) && !defined(AW_FX_FREQUENCIES_H)
 #define AW_FX_FREQUENCIES_H
 
 #include "aw_naff.h"

@@ -8,7 +8,31 @@
  *   lambda    log|w(t)| / t, 1/T
  * t = k h in T. Indicators not asked for, and flagged trajectories, are NaN.
  * Logarithms are taken here only (once per trajectory, scalar, per lane). */
-#ifndef AW_FX_INDICATORS_H
+/* What the host reads too (plain macros, gathered by the generated
+ * effects/aw_effect_declarations.h that aw_params.h includes). */
+#ifndef AW_FX_INDICATORS_DECLARATIONS
+#define AW_FX_INDICATORS_DECLARATIONS
+/* the tangent vector through the derivative of the same step, and its
+ * observers, each only when asked (docs/indicators.md) */
+#define AW_F_TANGENT 0x400u   /* tangent dynamics (any indicator sets it) */
+#define AW_F_FLI 0x800u       /* fast Lyapunov indicator: max_t log |w| */
+#define AW_F_MEGNO 0x1000u    /* mean MEGNO <Y> and the Lyapunov exponent from its slope */
+#define AW_F_LYAPUNOV 0x2000u /* finite-time maximal Lyapunov exponent log |w(t)| / t */
+#define AW_OUT_INDICATORS 2   /* AW_IND_REALS reals */
+/* The chaos indicators of a trajectory (NaN for a flagged one): FLI, mean
+ * MEGNO <Y>, the Lyapunov exponent from MEGNO's slope (1/T), the finite-time
+ * Lyapunov exponent (1/T). */
+#define AW_IND_REALS 4
+#define AW_IND_FLI 0
+#define AW_IND_MEGNO 1
+#define AW_IND_MEGNO_LYAPUNOV 2
+#define AW_IND_LYAPUNOV 3
+#define AW_FX_INDICATORS_RPARAMS                                          \
+  real tangent_w0[6]; /* initial tangent vector (dX in radians, dP), unit norm */ \
+  real tangent_step;  /* h in T: indicator times and exponents are in T */
+#endif
+
+#if !defined(AW_EFFECT_DECLARATIONS_ONLY) && !defined(AW_FX_INDICATORS_H)
 #define AW_FX_INDICATORS_H
 
 #include "aw_tangent.h"

@@ -1,7 +1,17 @@
 /* arnoldweb effects "initial_states" and "final_states": the state of every
  * trajectory (aw_params.h: AW_STATE_REALS reals, AW_STATE_INTS integers) in
  * its record (slots AW_OUT_INITIAL_STATE, AW_OUT_FINAL_STATE). */
-#ifndef AW_FX_STATES_H
+/* What the host reads too (plain macros, gathered by the generated
+ * effects/aw_effect_declarations.h that aw_params.h includes). */
+#ifndef AW_FX_STATES_DECLARATIONS
+#define AW_FX_STATES_DECLARATIONS
+#define AW_F_INITIAL_STATES 0x8u /* write initial states */
+#define AW_F_FINAL_STATES 0x10u  /* write final states */
+#define AW_OUT_INITIAL_STATE 0   /* AW_STATE_REALS reals */
+#define AW_OUT_FINAL_STATE 1     /* AW_STATE_REALS reals, AW_STATE_INTS integers */
+#endif
+
+#if !defined(AW_EFFECT_DECLARATIONS_ONLY) && !defined(AW_FX_STATES_H)
 #define AW_FX_STATES_H
 
 #include "effects/aw_fx_common.h"

@@ -2,7 +2,18 @@
  * flagging tests), "time_reversal" integrates back after the run (P -> -P,
  * the same steps again, P -> -P: back at the start, to rounding). Compiled in
  * only by the tests that ask for them. */
-#ifndef AW_FX_TESTING_H
+/* What the host reads too (plain macros, gathered by the generated
+ * effects/aw_effect_declarations.h that aw_params.h includes). */
+#ifndef AW_FX_TESTING_DECLARATIONS
+#define AW_FX_TESTING_DECLARATIONS
+#define AW_F_TEST_INJECT 0x20u /* test hook: poison one trajectory */
+#define AW_F_REVERSE 0x200u    /* test of time reversibility: after the run, flip P,
+                                  integrate as long again, flip P back (final states) */
+#define AW_FX_TESTING_RPARAMS real inject_value; /* test hook: value added to p_x (NaN, Inf) */
+#define AW_FX_TESTING_IPARAMS aw_i64 inject_index; /* test hook: the trajectory to poison */
+#endif
+
+#if !defined(AW_EFFECT_DECLARATIONS_ONLY) && !defined(AW_FX_TESTING_H)
 #define AW_FX_TESTING_H
 
 #include "aw_stepper.h"

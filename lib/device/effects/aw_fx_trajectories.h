@@ -4,7 +4,33 @@
  * the histogram buffer, indexed by the pick, so that their memory is the
  * picks' and not the ensemble's). A lane writes only when its trajectory is
  * one of ip->pick_ids (increasing: a binary search, at sample times only). */
-#ifndef AW_FX_TRAJECTORIES_H
+/* What the host reads too (plain macros, gathered by the generated
+ * effects/aw_effect_declarations.h that aw_params.h includes). */
+#ifndef AW_FX_TRAJECTORIES_DECLARATIONS
+#define AW_FX_TRAJECTORIES_DECLARATIONS
+#define AW_F_TRAJECTORIES 0x20000u /* the sampled states of chosen trajectories (observe.trajectories) */
+#define AW_OUT_TRAJECTORIES 6      /* picked: AW_PICK_REALS reals, AW_PICK_INTS integers per sample */
+/* Picked records: a record per sample of each picked trajectory (at most
+ * AW_MAX_PICKS, ip->pick_ids), not per trajectory: they lie in the histogram
+ * buffer after the maps and the zoom, from word ip->pick_base on, each value
+ * in two 32-bit words (a real's bits in the kernel's precision, low word
+ * first; an integer's 64 bits), written once by the trajectory's work-item
+ * and folded, summed and checkpointed with the counts (only the trajectory's
+ * own launch writes a nonzero word: the sums are its bits). Record (k, q) of
+ * pick k, sample q: u_x u_y u_z (turns, wrapped) p_x p_y p_z E(t) - E(0) |
+ * winding x y z. */
+#define AW_MAX_PICKS 1024
+#define AW_PICK_REALS 7
+#define AW_PICK_INTS 3
+#define AW_FX_TRAJECTORIES_IPARAMS                                                             \
+  aw_i64 pick_count;   /* picked trajectories: pick_ids[0 .. pick_count), increasing */         \
+  aw_i64 pick_stride;  /* segments between two samples */                                      \
+  aw_i64 pick_samples; /* S: samples after t = 0 */                                            \
+  aw_i64 pick_base;    /* their first word in the histogram buffer (even) */                    \
+  aw_i64 pick_ids[AW_MAX_PICKS];
+#endif
+
+#if !defined(AW_EFFECT_DECLARATIONS_ONLY) && !defined(AW_FX_TRAJECTORIES_H)
 #define AW_FX_TRAJECTORIES_H
 
 #include "aw_model.h"

@@ -1,6 +1,7 @@
 // arnoldweb: access to the embedded kernel sources.
 #include "backends/kernel_sources.hpp"
 
+#include <algorithm>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -32,8 +33,15 @@ std::string resolve(const std::string& target, const std::string& from, const Ex
   return "";
 }
 
-void flatten_into(const std::string& name, std::ostringstream& out, int depth, const Extra& extra) {
-  if (depth > 32) throw std::runtime_error("kernel sources: include nesting too deep at " + name);
+// `open`: the files whose expansion is in progress, outermost first. An include
+// of one of them is left out: every header guards itself from its first line,
+// so including it again from within yields nothing (the effect headers and
+// aw_params.h include each other through the generated
+// effects/aw_effect_declarations.h: a cycle the preprocessor's guards end).
+void flatten_into(const std::string& name, std::ostringstream& out, std::vector<std::string>& open,
+                  const Extra& extra) {
+  if (open.size() > 32) throw std::runtime_error("kernel sources: include nesting too deep at " + name);
+  open.push_back(name);
   static const std::regex include_re(R"(^\s*#\s*include\s*[<"]([^>"]+)[>"].*$)");
   const std::string* own = extra_file(name, extra);
   std::istringstream in{own ? *own : std::string(embedded_file(name))};
@@ -46,13 +54,18 @@ void flatten_into(const std::string& name, std::ostringstream& out, int depth, c
     if (std::regex_match(line, m, include_re)) {
       const std::string target = resolve(m[1].str(), name, extra);
       if (!target.empty()) {
-        flatten_into(target, out, depth + 1, extra);
-        out << "#line " << lineno + 1 << " \"" << name << "\"\n";
+        if (std::find(open.begin(), open.end(), target) == open.end()) {
+          flatten_into(target, out, open, extra);
+          out << "#line " << lineno + 1 << " \"" << name << "\"\n";
+        } else {
+          out << '\n';  // the line numbers go on
+        }
         continue;
       }
     }
     out << line << '\n';
   }
+  open.pop_back();
 }
 
 }  // namespace
@@ -67,7 +80,8 @@ std::string flatten_source(const std::string& name) { return flatten_source(name
 
 std::string flatten_source(const std::string& name, const Extra& extra) {
   std::ostringstream out;
-  flatten_into(name, out, 0, extra);
+  std::vector<std::string> open;
+  flatten_into(name, out, open, extra);
   return out.str();
 }
 

@@ -32,7 +32,7 @@ struct PictureFunctions {
   void (*figure)(const std::string& path, const Plan& plan, const Result& result,
                  const std::vector<FigurePanel>& panels, const RenderOptions& o);
   // the pictures the output table names (its datasets' grid pictures, its rows' `pictures`: rows of the
-  // plugin's picture table, lib/src/pictures/picture_table.cpp), into `dir`, their names appended to `names`
+  // plugin's picture table, lib/src/pictures/picture_table.hpp), into `dir`, their names appended to `names`
   void (*outputs)(const Plan& plan, const Result& result, const std::string& dir, std::vector<std::string>& names);
   // whether the picture table has a row of this name
   bool (*draws)(const std::string& picture);

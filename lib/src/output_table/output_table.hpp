@@ -1,7 +1,7 @@
 // arnoldweb: THE OUTPUT TABLE of per-trajectory outputs. One row per output
 // that a kernel writes for every trajectory (its state, its indicators, ...):
-// its name, its slot in the trajectory's records (lib/device/aw_params.h:
-// AW_OUT_*), the feature bit that asks for it, its columns of reals and of
+// its name, its slot in the trajectory's records (AW_OUT_*, declared in its
+// effect header lib/device/effects/aw_fx_<name>.h), the feature bit that asks for it, its columns of reals and of
 // integers, how chunks fold (concatenated in trajectory order: every row) and
 // how it is written (file, group, datasets). Everything downstream loops over
 // the rows: the planner lays the columns out (lay_out_records), the backends
@@ -17,10 +17,10 @@
 // This table sits below the scene (docs/design.md, "Layers") so that the
 // scene's keys can come from it.
 //
-// Adding a per-trajectory output: a slot in aw_params.h, the device code that
-// writes aw_record_r/aw_record_i(out, ip, slot, rec) (an effect header and its
-// hook), a row here, and its picture's row if it draws one (docs/design.md,
-// "A per-trajectory output").
+// Adding a per-trajectory output: its effect header (its bit, slot, sizes and
+// parameters declared there, and the hook that writes aw_record_r/aw_record_i(out,
+// ip, slot, rec)), a row here, and its picture (function and registered row) if
+// it draws one (docs/design.md, "A per-trajectory output").
 #pragma once
 
 #include <cstdint>
@@ -199,7 +199,7 @@ struct DirectionKey {
 
 struct RecordOutput {
   std::string name;           // Result::records_of, summary.json "digests", Python
-  int slot = 0;               // AW_OUT_* (aw_params.h)
+  int slot = 0;               // AW_OUT_* (its effect header's declarations)
   std::uint32_t feature = 0;  // the kernel writes it when its features have this bit
   Width reals, ints;          // columns per trajectory
   std::string file;           // the output file it is written into ...
@@ -215,12 +215,12 @@ struct RecordOutput {
   std::vector<KeyTable> tables = {};        // the table keys that ask for it
   // Picked (not per trajectory): records of a few chosen trajectories, `shape`
   // of them (e.g. picks x samples), `reals` and `ints` columns each, in the
-  // histogram buffer after the maps (aw_params.h, "Picked records"): their
+  // histogram buffer after the maps (effects/aw_fx_trajectories.h, "Picked records"): their
   // memory is the picks', not the ensemble's, and they take no columns of the
   // trajectories' records. Their datasets have the records' shape.
   Shape picked = nullptr;
   // The pictures drawn of its records: names of rows of the pictures plugin's
-  // picture table (lib/src/pictures/picture_table.cpp).
+  // picture table (lib/src/pictures/picture_table.hpp: rows registered beside their functions).
   std::vector<std::string> pictures = {};
   std::vector<DirectionKey> directions = {};  // the direction keys that parametrise it
   // Kept between launches only (checkpoints), never a result: no file.

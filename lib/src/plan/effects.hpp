@@ -1,9 +1,10 @@
 // arnoldweb: the effect table. One row per optional effect of the kernels:
-// its name (in summary.json and `check`), its feature bit (lib/device/
-// aw_params.h) and whether a scene asks for it. The planner compiles exactly
-// the effects a scene asks for into its kernel.
-// Adding an effect: its device header (lib/device/effects/), its bit, and a
-// row here.
+// its name (in summary.json and `check`), its feature bit (declared in its
+// device header lib/device/effects/aw_fx_<name>.h, gathered for aw_params.h)
+// and whether a scene asks for it. The planner compiles exactly the effects a
+// scene asks for into its kernel.
+// Adding an effect: its device header (lib/device/effects/: bit, hooks) and a
+// row here (or its output row's key, which adds the row).
 #pragma once
 
 #include <cstdint>
