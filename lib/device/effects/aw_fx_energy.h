@@ -1,6 +1,7 @@
-/* arnoldweb effects "energy_error" and "max_energy_error": |E(t) - E(0)| at
- * every sample; its maximum per trajectory goes into a log2 histogram and the
- * work-group statistics; above observe.max_energy_error a trajectory is
+/* arnoldweb effects "energy_error", "max_energy_error" and "energy_errors":
+ * |E(t) - E(0)| at every sample; its maximum per trajectory goes into a log2
+ * histogram and the work-group statistics (and with observe.energy_errors into
+ * the trajectory's record); above observe.max_energy_error a trajectory is
  * flagged at the end of the window. */
 /* What the host reads too (plain macros, gathered by the generated
  * effects/aw_effect_declarations.h that aw_params.h includes). */
@@ -8,6 +9,8 @@
 #define AW_FX_ENERGY_DECLARATIONS
 #define AW_F_ENERGY 0x2u       /* track |E(t) - E(0)| at every sample */
 #define AW_F_ENERGY_LIMIT 0x4u /* flag trajectories above a threshold */
+#define AW_F_ENERGY_ERRORS 0x40000u /* write every trajectory's max |dE| (observe.energy_errors) */
+#define AW_OUT_ENERGY_ERRORS 7      /* 1 real: the trajectory's max |dE| over the energy samples */
 #define AW_FX_ENERGY_RPARAMS real energy_limit; /* flag when |dE| exceeds this */
 #define AW_FX_ENERGY_IPARAMS aw_i64 energy_stride; /* segments between energy samples (1: every segment) */
 #endif
@@ -75,7 +78,8 @@ AW_FN void aw_fx_energy_flag(aw_config cfg, aw_fx_energy_state* me, aw_fx_core* 
     if (flag[j] == AW_STATUS_OK && aover[j] != AW_R(0.0)) flag[j] = AW_STATUS_ENERGY;
 }
 
-/* Every lane's max|dE| in the histogram; the binned lanes' maximum and sum. */
+/* Every lane's max|dE| in the histogram (and, asked for, in its record); the
+ * binned lanes' maximum and sum. */
 AW_FN void aw_fx_energy_finish(aw_config cfg, aw_fx_energy_state* me, aw_fx_core* fx, aw_lstate* s, aw_lanes l,
                                AW_CONSTANT aw_rparams* rp, AW_CONSTANT aw_iparams* ip, aw_outputs out) {
   if (!AW_HAS(AW_F_ENERGY)) return;
@@ -84,6 +88,7 @@ AW_FN void aw_fx_energy_finish(aw_config cfg, aw_fx_energy_state* me, aw_fx_core
   for (int j = 0; j < AW_LANES; ++j) {
     if (!AW_LANE_ACTIVE(l, j)) continue;
     AW_ATOMIC_INC(&out.counters[AW_C_EHIST + aw_energy_bin(amax[j])]);
+    if (AW_HAS(AW_F_ENERGY_ERRORS)) aw_record_r(out, ip, AW_OUT_ENERGY_ERRORS, AW_LANE_RECORD(l, j))[0] = amax[j];
     if (fx->status[j] == AW_STATUS_OK) {
       fx->binned_emax = (amax[j] > fx->binned_emax) ? amax[j] : fx->binned_emax;
       fx->binned_esum += amax[j];

@@ -296,6 +296,18 @@ const std::vector<RecordOutput>& record_outputs() {
         {"position", false, 0, 3, "2 pi (winding + position_turns): unwrapped, in radians", 0, true}},
        "the final state of every trajectory: position in turns with its winding counts, momentum, status",
        {"time_end"}},
+      {"energy_errors", AW_OUT_ENERGY_ERRORS, AW_F_ENERGY_ERRORS, fixed(1), fixed(0), "energy_errors.h5", "", true,
+       {{"max_energy_error", false, 0, 1,
+         "max over the energy samples (observe.energy_error.every) of |E(t) - E(0)|, every trajectory, flagged "
+         "ones included (NaN where the state became non-finite)"},
+        {"log10_max_energy_error", false, 0, 1, "log10 of max_energy_error (0: -inf)", 0, false, true, 0,
+         "energy_error.png", "log10 max|E(t) - E(0)|"}},
+       "the largest energy error of every trajectory: where the integration loses accuracy",
+       {"duration"},
+       {{"observe.energy_errors", AW_F_ENERGY_ERRORS, AW_F_ENERGY,
+         "The largest energy error of every trajectory, the maximum over the energy samples of abs(E(t) - E(0)), "
+         "into energy_errors.h5 (over a grid of initial conditions, energy_error.png): where the method's step loses "
+         "accuracy."}}},
       {"indicators", AW_OUT_INDICATORS, AW_F_TANGENT, fixed(AW_IND_REALS), fixed(0), "indicators.h5", "", true,
        {{"fli", false, AW_IND_FLI, 1, "max over the run of log|w(t)|, |w(0)| = 1 (natural log); NaN: trajectory flagged",
          AW_F_FLI, false, false, 0, "fli.png", "FLI = max log|w|"},

@@ -8,6 +8,7 @@
 // puts the two views of one web side by side.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 
 #include "arnoldweb/output.hpp"
@@ -216,7 +217,10 @@ void write_dataset_pictures(const Plan& plan, const Result& r, const std::string
     if (!rec || rec->reals.empty()) continue;
     for (const RecordDataset& d : row->datasets) {
       if (d.picture.empty() || d.integers || (d.feature && !(plan.kernel.features & d.feature))) continue;
-      write_grid_picture(plan, r, dir + "/" + d.picture, column(*rec, d.first), d.picture_label);
+      std::vector<double> v = column(*rec, d.first);
+      if (d.log10)  // drawn as its file holds it: log10, zero and below left blank with the flagged
+        for (double& x : v) x = x > 0 ? std::log10(x) : std::numeric_limits<double>::quiet_NaN();
+      write_grid_picture(plan, r, dir + "/" + d.picture, v, d.picture_label);
       names.push_back(d.picture);
     }
   }
