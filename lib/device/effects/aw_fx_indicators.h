@@ -122,37 +122,30 @@ AW_FN void aw_fx_indicators_finish(aw_config cfg, aw_fx_indicators_state* me, aw
   }
 }
 
-/* The tangent vector and its observers (AW_CARRY_TANGENT + 0 .. 12), the
- * steps in the last integer; the Hessian comes again with the first force. */
+/* The tangent vector and its observers, in their order in the carry record
+ * (AW_CARRY_TANGENT + 0 .. 12); the steps in its last integer. The Hessian
+ * comes again with the first force. */
+#define AW_TANGENT_CARRIED(t)                                                                          \
+  {&(t)->qx, &(t)->qy, &(t)->qz, &(t)->px, &(t)->py, &(t)->pz, &(t)->log2w, &(t)->max_n2, &(t)->s1, \
+   &(t)->ysum, &(t)->mean_y, &(t)->cov, &(t)->prev_n2}
+
 AW_FN void aw_fx_indicators_carry_save(aw_config cfg, aw_fx_indicators_state* me, aw_fx_core* fx, aw_outputs out,
                                        AW_CONSTANT aw_iparams* ip, aw_lanes l) {
-  const aw_tangent* t = &me->tangent;
-  const lreal r[13] = {t->qx, t->qy, t->qz, t->px, t->py, t->pz, t->log2w,
-                       t->max_n2, t->s1, t->ysum, t->mean_y, t->cov, t->prev_n2};
-  for (int c = 0; c < 13; ++c) aw_carry_put(out, ip, l, AW_CARRY_TANGENT + c, r[c]);
+  lreal* const f[13] = AW_TANGENT_CARRIED(&me->tangent);
+  for (int c = 0; c < 13; ++c) aw_carry_put(out, ip, l, AW_CARRY_TANGENT + c, *f[c]);
   for (int j = 0; j < AW_LANES; ++j)
-    if (AW_LANE_ACTIVE(l, j)) aw_record_i(out, ip, AW_OUT_CARRY, AW_LANE_RECORD(l, j))[AW_CARRY_INTS - 1] = t->steps;
+    if (AW_LANE_ACTIVE(l, j))
+      aw_record_i(out, ip, AW_OUT_CARRY, AW_LANE_RECORD(l, j))[AW_CARRY_INTS - 1] = me->tangent.steps;
 }
 
 AW_FN void aw_fx_indicators_carry_load(aw_config cfg, aw_fx_indicators_state* me, aw_fx_core* fx, aw_outputs out,
                                        AW_CONSTANT aw_iparams* ip, aw_lanes l) {
-  aw_tangent* t = &me->tangent;
-  t->qx = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 0);
-  t->qy = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 1);
-  t->qz = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 2);
-  t->px = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 3);
-  t->py = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 4);
-  t->pz = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 5);
-  t->log2w = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 6);
-  t->max_n2 = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 7);
-  t->s1 = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 8);
-  t->ysum = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 9);
-  t->mean_y = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 10);
-  t->cov = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 11);
-  t->prev_n2 = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + 12);
-  t->steps = 0;
+  lreal* const f[13] = AW_TANGENT_CARRIED(&me->tangent);
+  for (int c = 0; c < 13; ++c) *f[c] = aw_carry_get(out, ip, l, AW_CARRY_TANGENT + c);
+  me->tangent.steps = 0;
   for (int j = 0; j < AW_LANES; ++j)
-    if (AW_LANE_ACTIVE(l, j)) t->steps = aw_record_i(out, ip, AW_OUT_CARRY, AW_LANE_RECORD(l, j))[AW_CARRY_INTS - 1];
+    if (AW_LANE_ACTIVE(l, j))
+      me->tangent.steps = aw_record_i(out, ip, AW_OUT_CARRY, AW_LANE_RECORD(l, j))[AW_CARRY_INTS - 1];
 }
 
 #endif /* AW_FX_INDICATORS_H */
