@@ -2,8 +2,21 @@
 # tests/effects/effect_hooks.cmake): each runs its own script once per case
 # (cmake -DSOURCE_DIR=<repo> -DCASE=<dir> -P <the script>) and checks its exit
 # status and output.
+#   awtest_case_files(<dir> <file name, <name> replaced> <first line> <name>=<text> ...)
+#       writes one file per item (@SEMI@ in a text stands for ';', which a list's elements cannot hold)
 #   awtest_script_case(<name> <0: succeeds, 1: fails> <what the output holds> <case dir>)
 #   awtest_script_cases_end(<what> <work dir>)   removes the work dir; fails naming every case that did not hold
+
+function(awtest_case_files dir file_name first_line)
+  file(MAKE_DIRECTORY "${dir}")
+  foreach(item IN LISTS ARGN)
+    string(REGEX REPLACE "^([a-z0-9_]+)=.*$" "\\1" name "${item}")
+    string(REGEX REPLACE "^[a-z0-9_]+=(.*)$" "\\1" text "${item}")
+    string(REPLACE "@SEMI@" ";" text "${text}")
+    string(REPLACE "<name>" "${name}" file "${file_name}")
+    file(WRITE "${dir}/${file}" "${first_line}\n${text}\n")
+  endforeach()
+endfunction()
 
 function(awtest_script_case name must_fail expected dir)
   # CMAKE_CURRENT_LIST_FILE: the calling script (a function does not change it)
