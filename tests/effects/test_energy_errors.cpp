@@ -9,7 +9,6 @@
 //  - over a grid (ctest output): energy_errors.h5 of the grid's shape and
 //    energy_error.png.
 #include <doctest/doctest.h>
-#include <hdf5.h>
 
 #include <algorithm>
 #include <array>
@@ -20,6 +19,7 @@
 #include <vector>
 
 #include "aw_params.h"
+#include "h5_test_file.hpp"
 #include "output/pictures.hpp"
 #include "run_outputs.hpp"
 #include "support.hpp"
@@ -59,20 +59,6 @@ std::size_t bin_of(double e) {
   const double m = std::frexp(e, &ex);
   return static_cast<std::size_t>(1 + (ex - 1 - AW_EHIST_MIN_EXP) * AW_EHIST_BINS_PER_OCTAVE +
                                   static_cast<int>((m - 0.5) * 8.0));
-}
-
-std::vector<hsize_t> shape_of(const std::string& file, const char* dataset) {
-  hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  REQUIRE(f >= 0);
-  hid_t d = H5Dopen2(f, dataset, H5P_DEFAULT);
-  REQUIRE(d >= 0);
-  hid_t space = H5Dget_space(d);
-  std::vector<hsize_t> dims(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space)));
-  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-  H5Sclose(space);
-  H5Dclose(d);
-  H5Fclose(f);
-  return dims;
 }
 
 }  // namespace
@@ -136,8 +122,11 @@ TEST_SUITE("output") {
                                           "[integrator]\nstep = 0.025\n[run]\naverage = 5\nduration = 5\n"
                                           "device = \"cpu\"\n[observe]\nenergy_errors = true\n";
     REQUIRE(awtest::run_cli({"run", dir + "/scene.toml", "--quiet", "--out", dir + "/out"}) == 0);
-    CHECK(shape_of(dir + "/out/energy_errors.h5", "max_energy_error") == std::vector<hsize_t>{12, 16});
-    CHECK(shape_of(dir + "/out/energy_errors.h5", "log10_max_energy_error") == std::vector<hsize_t>{12, 16});
+    for (const char* dataset : {"max_energy_error", "log10_max_energy_error"}) {
+      std::vector<hsize_t> dims;
+      awtest::read_doubles(dir + "/out/energy_errors.h5", dataset, &dims);
+      CHECK(dims == std::vector<hsize_t>{12, 16});
+    }
     const nlohmann::json summary = awtest::summary_of(dir + "/out");
     CHECK_FALSE(summary["digests"]["energy_errors"].get<std::string>().empty());
     const auto& files = summary["files"];

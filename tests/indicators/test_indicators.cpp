@@ -18,6 +18,7 @@
 #include "aw_params.h"
 #include "core_double.hpp"
 #include "scalar_core.hpp"
+#include "h5_test_file.hpp"
 #include "support.hpp"
 
 using namespace arnoldweb;
@@ -431,29 +432,6 @@ TEST_SUITE("indicators") {
   }
 }
 
-namespace {
-
-// A double dataset of an HDF5 file and its dimensions.
-std::vector<double> read_doubles(const std::string& file, const char* name, std::vector<hsize_t>* dims) {
-  hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  REQUIRE(f >= 0);
-  hid_t d = H5Dopen2(f, name, H5P_DEFAULT);
-  REQUIRE(d >= 0);
-  hid_t space = H5Dget_space(d);
-  const int rank = H5Sget_simple_extent_ndims(space);
-  dims->assign(static_cast<std::size_t>(rank), 0);
-  H5Sget_simple_extent_dims(space, dims->data(), nullptr);
-  hsize_t n = 1;
-  for (hsize_t x : *dims) n *= x;
-  std::vector<double> v(n);
-  CHECK(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) >= 0);
-  H5Sclose(space);
-  H5Dclose(d);
-  H5Fclose(f);
-  return v;
-}
-
-}  // namespace
 
 TEST_SUITE("indicators") {
   TEST_CASE("arnoldweb run writes indicators.h5 (the grid's shape and axes) and fli.png, megno.png, all listed") {
@@ -475,14 +453,14 @@ TEST_SUITE("indicators") {
     const Result r = awtest::run_on("cpu", plan);
     const auto written = write_outputs(plan, r, dir, {});
     std::vector<hsize_t> dims;
-    const auto fli = read_doubles(dir + "/indicators.h5", "fli", &dims);
+    const auto fli = awtest::read_doubles(dir + "/indicators.h5", "fli", &dims);
     CHECK(dims == std::vector<hsize_t>{4, 6});  // rows = the second momentum
     for (std::size_t t = 0; t < 24; ++t) CHECK(fli[t] == r.reals("indicators")[t * AW_IND_REALS + AW_IND_FLI]);
-    const auto megno = read_doubles(dir + "/indicators.h5", "megno", &dims);
+    const auto megno = awtest::read_doubles(dir + "/indicators.h5", "megno", &dims);
     CHECK(megno[5] == r.reals("indicators")[5 * AW_IND_REALS + AW_IND_MEGNO]);
-    const auto axis1 = read_doubles(dir + "/indicators.h5", "grid/axis1", &dims);
+    const auto axis1 = awtest::read_doubles(dir + "/indicators.h5", "grid/axis1", &dims);
     CHECK(axis1 == std::vector<double>{2 + 1 / 12.0, 2 + 3 / 12.0, 2 + 5 / 12.0, 2 + 7 / 12.0, 2 + 9 / 12.0, 2 + 11 / 12.0});
-    const auto axis2 = read_doubles(dir + "/indicators.h5", "grid/axis2", &dims);
+    const auto axis2 = awtest::read_doubles(dir + "/indicators.h5", "grid/axis2", &dims);
     CHECK(axis2 == std::vector<double>{1.125, 1.375, 1.625, 1.875});
     hid_t f = H5Fopen((dir + "/indicators.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     CHECK(H5Lexists(f, "lyapunov", H5P_DEFAULT) == 0);  // not asked for

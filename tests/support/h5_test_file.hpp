@@ -1,7 +1,8 @@
 // HDF5 files written by tests with the HDF5 C API: good ones and crafted
 // ones (what h5py writes by default, links and storage that lead out of the
 // file, datasets that declare more than they store) for the readers' tests
-// (tests/states, tests/output, tests/reliability).
+// (tests/states, tests/output, tests/reliability); read_doubles reads a
+// dataset a run wrote back with its dimensions.
 #pragma once
 
 #include <doctest/doctest.h>
@@ -14,6 +15,26 @@
 #include <vector>
 
 namespace awtest {
+
+// A double dataset of an HDF5 file and its dimensions.
+inline std::vector<double> read_doubles(const std::string& file, const char* name, std::vector<hsize_t>* dims) {
+  hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  REQUIRE(f >= 0);
+  hid_t d = H5Dopen2(f, name, H5P_DEFAULT);
+  REQUIRE(d >= 0);
+  hid_t space = H5Dget_space(d);
+  const int rank = H5Sget_simple_extent_ndims(space);
+  dims->assign(static_cast<std::size_t>(rank), 0);
+  H5Sget_simple_extent_dims(space, dims->data(), nullptr);
+  hsize_t n = 1;
+  for (hsize_t x : *dims) n *= x;
+  std::vector<double> v(n);
+  CHECK(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) >= 0);
+  H5Sclose(space);
+  H5Dclose(d);
+  H5Fclose(f);
+  return v;
+}
 
 class H5TestFile {
  public:
