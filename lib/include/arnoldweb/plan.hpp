@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "arnoldweb/methods.hpp"
@@ -78,6 +79,9 @@ struct Plan {
   // segments between two samples of each sample interval of the output table's table keys
   // (TableSubKey::interval), by dotted sub-key ("observe.<name>.every"), where taken
   std::map<std::string, std::int64_t> strides;
+  // those sample intervals in T, as the output table gave them when planned (re-planning
+  // at another step or count, with_step and with_trajectories, reads them here)
+  std::vector<std::pair<std::string, double>> sample_intervals;
   std::int64_t segments_per_window = 0; // samples per averaging window
   std::int64_t windows = 0;             // averaging windows per trajectory
   std::int64_t steps_per_trajectory = 0;

@@ -432,6 +432,15 @@ std::uint32_t switch_features(const std::set<std::string>& on, const KeyValues& 
   return f;
 }
 
+std::vector<std::pair<std::string, double>> sample_intervals(const KeyValues& values) {
+  std::vector<std::pair<std::string, double>> all;
+  for (const KeyTable* t : key_tables())
+    if (t->on(values))
+      for (const TableSubKey& k : t->keys)
+        if (k.interval && t->taken(values, k)) all.emplace_back(t->sub(k.name), t->value(values, k.name).at(0));
+  return all;
+}
+
 const RecordOutput* find_record_output(const std::string& name) {
   for (const RecordOutput& r : record_outputs())
     if (r.name == name) return &r;

@@ -28,6 +28,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "params/kernel_params.hpp"
@@ -238,6 +239,9 @@ const DirectionKey* find_direction_key(const std::string& key);
 // The AW_F_* bits the switches set true (their keys in `on`) and the table keys
 // switched on (their values) ask for.
 std::uint32_t switch_features(const std::set<std::string>& on, const KeyValues& values);
+// The sample intervals of the table keys switched on (TableSubKey::interval),
+// where taken, in table order: each dotted sub-key and its value in T.
+std::vector<std::pair<std::string, double>> sample_intervals(const KeyValues& values);
 // The row of a name, or nullptr.
 const RecordOutput* find_record_output(const std::string& name);
 // The rows a kernel with these features writes, in table order.

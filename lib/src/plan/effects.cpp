@@ -49,8 +49,8 @@ const std::vector<EffectRow>& effects() {
   return rows;
 }
 
-std::uint32_t features_of(const Scene& scene) {
-  std::uint32_t f = switch_features(scene.switches, scene.output_values);
+std::uint32_t features_of(const Scene& scene, std::uint32_t switch_bits) {
+  std::uint32_t f = switch_bits;
   for (const EffectRow& e : effects())
     if (e.asked && e.asked(scene)) f |= e.bit;
   return f;

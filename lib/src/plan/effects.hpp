@@ -24,7 +24,8 @@ struct EffectRow {
 
 const std::vector<EffectRow>& effects();
 
-// The feature mask of the effects `scene` asks for, its output switches' bits included.
-std::uint32_t features_of(const Scene& scene);
+// The feature mask of the effects `scene` asks for, with the bits its output
+// switches ask for (switch_features, looked up before planning: lookups.hpp).
+std::uint32_t features_of(const Scene& scene, std::uint32_t switch_bits);
 
 }  // namespace arnoldweb::detail

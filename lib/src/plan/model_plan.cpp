@@ -15,9 +15,6 @@ namespace {
 
 std::string fmt(double v) { return show_number(v); }
 
-// Initial positions are drawn by rejection: the accessible fraction must leave room.
-constexpr double kMinAccessible = 0.001;
-
 // Whether a model key holds another value than its default (the scene's echo,
 // to_toml, writes every key: the defaults of other models read back).
 bool differs_from_default(const Scene& s, const ModelParameter& p) {
@@ -33,18 +30,7 @@ std::string key_list(const ModelDescriptor& model) {
 
 }  // namespace
 
-const ModelDescriptor& model_of(const Scene& scene) {
-  if (scene.model_kind == "expression") {
-    try {
-      return expression_row({scene.model_potential, scene.model_parameters});
-    } catch (const ModelError& e) {
-      fail_at(scene, e.key(), e.what());
-    }
-  }
-  const ModelDescriptor* m = find_model(scene.model_kind);
-  if (!m) fail_at(scene, "model.kind", "unknown model \"" + scene.model_kind + "\"");
-  return *m;
-}
+const ModelDescriptor& model_of(const Scene& scene) { return model_found(scene, look_up_model(scene)); }
 
 // Keys of another model than the scene's are refused where written with
 // another value than their default; the kinetic form must suit the initial kind.
@@ -72,13 +58,14 @@ namespace {
 // The energy surface T(P) + V(X) = E of a kinetic form other than |P|^2/2
 // (linear terms, zero coefficients): the fraction of positions and directions
 // from which it is reached must leave room for the rejection sampling.
-void plan_reachable(const Scene& scene, const ModelDescriptor& model, const RealParams& rp, Plan& p) {
-  p.accessible_fraction = reachable_fraction(model, rp, scene.energy);
+void plan_reachable(const Scene& scene, const ModelDescriptor& model, const RealParams& rp, const PlanLookups& found,
+                    Plan& p) {
+  p.accessible_fraction = found.fraction;
   if (p.accessible_fraction >= kMinAccessible) return;
   const auto v = model.v_range(rp);
   const auto k = model.kinetic(rp);
   std::string range;
-  if (energy_bounds_momenta(model, rp)) {
+  if (found.bounds_momenta) {
     double t_min = 0;  // the bottom of T: -sum b_i^2 / (2 a_i)
     for (int i = 0; i < 3; ++i) t_min -= k[3 + i] * k[3 + i] / (2 * k[i]);
     range = "T(P) >= " + fmt(t_min) + " and " + fmt(v[0]) + " <= V <= " + fmt(v[1]) + ", so E must exceed " +
@@ -97,35 +84,26 @@ void plan_reachable(const Scene& scene, const ModelDescriptor& model, const Real
 }  // namespace
 
 // The energy must leave enough of the torus accessible for initial states.
-void plan_accessible(const Scene& scene, const ModelDescriptor& model, const RealParams& rp, Plan& p) {
-  const auto k = model.kinetic(rp);
-  if (!(k[0] > 0 && k[1] > 0 && k[2] > 0 && k[3] == 0 && k[4] == 0 && k[5] == 0))
-    return plan_reachable(scene, model, rp, p);  // T(s n) = ke is not simply "ke > 0"
+void plan_accessible(const Scene& scene, const ModelDescriptor& model, const RealParams& rp, const PlanLookups& found,
+                     Plan& p) {
+  if (!found.accessible) return plan_reachable(scene, model, rp, found, p);  // T(s n) = ke is not simply "ke > 0"
   const double v_min = model.v_range(rp)[0];
   if (!(scene.energy > v_min))
     fail_at(scene, "model.energy",
             "E = " + fmt(scene.energy) + " leaves no accessible phase space (V >= " + fmt(v_min) +
                 " everywhere); choose E > " + fmt(v_min));
   // With Gaussian momenta the position must leave room for p_x^2 + p_y^2 / 2.
-  const double mean_kinetic =
-      scene.initial == "gaussian"
-          ? 0.5 * (scene.gaussian_mean[0] * scene.gaussian_mean[0] + scene.gaussian_mean[1] * scene.gaussian_mean[1])
-          : 0.0;
+  const double mean_kinetic = found.mean_kinetic;
   if (scene.initial == "gaussian" && !(scene.energy - mean_kinetic > v_min))
     fail_at(scene, "ensemble.gaussian.mean",
             "the mean momentum carries kinetic energy " + fmt(mean_kinetic) + " >= E - min V = " +
                 fmt(scene.energy - v_min) + ": no position has enough energy left for it");
-  p.accessible_fraction = accessible_fraction(model, rp, scene.energy - mean_kinetic);
+  p.accessible_fraction = found.fraction;
   if (p.accessible_fraction >= kMinAccessible) return;
-  double lo = scene.energy, hi = model.v_range(rp)[1];  // smallest E with enough accessible torus
-  for (int i = 0; i < 40; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (accessible_fraction(model, rp, mid) < kMinAccessible ? lo : hi) = mid;
-  }
   fail_at(scene, "model.energy",
           "at E = " + fmt(scene.energy) + " only " + fmt(100 * p.accessible_fraction) +
               "% of the torus is accessible (V(X) < E); initial positions are drawn by rejection and need at "
-              "least " + fmt(100 * kMinAccessible) + "%: choose E >= " + fmt(std::ceil(hi * 1000) / 1000));
+              "least " + fmt(100 * kMinAccessible) + "%: choose E >= " + fmt(std::ceil(found.enough_energy * 1000) / 1000));
 }
 
 // The model's largest frequency omega (the step-size guard's h omega):
@@ -166,8 +144,8 @@ std::uint64_t fastest_velocities(const ModelDescriptor& model, const KernelParam
 
 }  // namespace
 
-double model_frequency(const Scene& scene, const ModelDescriptor& model, const KernelParams& kp, int initial,
-                       const StateSet* states, std::string& basis) {
+double model_frequency(const Scene& scene, const ModelDescriptor& model, bool bounds_momenta, const KernelParams& kp,
+                       int initial, const StateSet* states, std::string& basis) {
   const RealParams& rp = kp.reals;
   if (model.closed_frequency) {
     const double omega = model.closed_frequency(scene.energy, rp);
@@ -180,7 +158,7 @@ double model_frequency(const Scene& scene, const ModelDescriptor& model, const K
   const double a_max = std::max({k[0], k[1], k[2]});
   const double libration = std::sqrt(a_max * model.hessian_bound(rp));
   double drift = 0;
-  if (energy_bounds_momenta(model, rp)) {
+  if (bounds_momenta) {
     double big_k = std::max(0.0, scene.energy - v[0]);
     for (int i = 0; i < 3; ++i) big_k += k[3 + i] * k[3 + i] / (2 * k[i]);
     for (const auto& w : waves)
@@ -200,9 +178,9 @@ double model_frequency(const Scene& scene, const ModelDescriptor& model, const K
   return drift + libration;
 }
 
-void plan_guard(const Scene& scene, const ModelDescriptor& model, const KernelParams& kp, Plan& p) {
+void plan_guard(const Scene& scene, const ModelDescriptor& model, bool bounds_momenta, const KernelParams& kp, Plan& p) {
   std::string basis;
-  const double omega = model_frequency(scene, model, kp, p.kernel.initial, p.states.get(), basis);
+  const double omega = model_frequency(scene, model, bounds_momenta, kp, p.kernel.initial, p.states.get(), basis);
   guard_step(scene, model, omega, basis, p);
 }
 

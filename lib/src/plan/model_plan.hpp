@@ -11,10 +11,12 @@
 #include "arnoldweb/plan.hpp"
 #include "params/kernel_params.hpp"
 #include "physics/model_table.hpp"
+#include "plan/lookups.hpp"
 
 namespace arnoldweb::detail {
 
-// The model of a scene (SceneError naming model.kind, or the expression's key).
+// The model of a scene (SceneError naming model.kind, or the expression's key);
+// make_plan takes it from its lookups (model_found).
 const ModelDescriptor& model_of(const Scene& scene);
 
 // The model's parameters into rp.model; refuses keys of another model written
@@ -23,18 +25,20 @@ const ModelDescriptor& model_of(const Scene& scene);
 void plan_model_values(const Scene& scene, const ModelDescriptor& model, RealParams& rp);
 
 // The energy must leave enough phase space for the initial states (rejection
-// sampling): sets plan.accessible_fraction, or SceneError naming model.energy.
-void plan_accessible(const Scene& scene, const ModelDescriptor& model, const RealParams& rp, Plan& p);
+// sampling, the fraction looked up): sets plan.accessible_fraction, or SceneError naming model.energy.
+void plan_accessible(const Scene& scene, const ModelDescriptor& model, const RealParams& rp, const PlanLookups& found,
+                     Plan& p);
 
 // The model's largest frequency omega at the scene's energy (radians per time
 // unit) and how it was found (`basis`); where the momenta do not follow from the
-// energy, from the given states (null: those the initial kind draws).
-double model_frequency(const Scene& scene, const ModelDescriptor& model, const KernelParams& kp, int initial,
-                       const StateSet* states, std::string& basis);
+// energy (bounds_momenta: energy_bounds_momenta), from the given states (null:
+// those the initial kind draws).
+double model_frequency(const Scene& scene, const ModelDescriptor& model, bool bounds_momenta, const KernelParams& kp,
+                       int initial, const StateSet* states, std::string& basis);
 
 // The step-size guard of the plan's step (plan.guard, warnings), or SceneError
 // naming integrator.step when it is unsafe.
-void plan_guard(const Scene& scene, const ModelDescriptor& model, const KernelParams& kp, Plan& p);
+void plan_guard(const Scene& scene, const ModelDescriptor& model, bool bounds_momenta, const KernelParams& kp, Plan& p);
 // The same at the plan's step for a frequency found before (with_step).
 void guard_step(const Scene& scene, const ModelDescriptor& model, double omega, const std::string& basis, Plan& p);
 

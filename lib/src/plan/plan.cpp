@@ -9,11 +9,11 @@
 #include <limits>
 #include <stdexcept>
 
-#include "arnoldweb/sphere.hpp"
 #include "aw_params.h"
 #include "plan/checks.hpp"
 #include "plan/effects.hpp"
 #include "plan/indicators.hpp"
+#include "plan/lookups.hpp"
 #include "plan/analysis_plan.hpp"
 #include "plan/model_plan.hpp"
 #include "plan/plan_params.hpp"
@@ -30,16 +30,12 @@ constexpr double kTwoPi = 6.283185307179586476925;
 constexpr double kDeg = M_PI / 180.0;
 // Initial positions are drawn by rejection: with accessible fraction f, each
 // trajectory tries up to 30/f positions (failure probability e^-30 ~ 1e-13).
-constexpr double kMinAccessible = 0.001;
 constexpr double kAttemptsTimesFraction = 30.0;
 constexpr std::uint64_t kMaxStateRecords = 50'000'000;
 
-void plan_method(const Scene& scene, Plan& p) {
-  try {
-    p.method = find_method(scene.method);
-  } catch (const std::out_of_range& e) {
-    fail_at(scene, "integrator.method", e.what());
-  }
+void plan_method(const Scene& scene, const detail::PlanLookups& found, Plan& p) {
+  if (!found.method) fail_at(scene, "integrator.method", found.method_error);
+  p.method = *found.method;
 }
 
 int initial_kind(const Scene& scene) {
@@ -61,7 +57,7 @@ std::string tangent_keys() {
   return s;
 }
 
-void plan_kernel(const Scene& scene, const detail::ModelDescriptor& model, Plan& p) {
+void plan_kernel(const Scene& scene, const detail::ModelDescriptor& model, std::uint32_t switch_bits, Plan& p) {
   KernelConfig& k = p.kernel;
   k.precision = scene.precision;
   k.math = scene.math;
@@ -71,7 +67,7 @@ void plan_kernel(const Scene& scene, const detail::ModelDescriptor& model, Plan&
   k.model = model.id;
   k.model_source = model.device_source;  // an expression model's header, or empty
   k.initial = initial_kind(scene);
-  k.features = detail::features_of(scene);
+  k.features = detail::features_of(scene, switch_bits);
   if (p.slices > 1) k.features |= AW_F_CARRY;  // a slice leaves the trajectories' whole state in their records
   if (k.gradient && (k.features & AW_F_TANGENT))
     fail_at(scene, "integrator.method",
@@ -93,10 +89,9 @@ void plan_histograms(const Scene& scene, Plan& p) {
                 static_cast<std::uint64_t>(p.zoom_resolution) * static_cast<std::uint64_t>(p.zoom_resolution);
 }
 
-// Orthonormal frame of the direction at longitude lon, latitude lat (degrees).
+// The orthonormal frame of a direction (looked up: lookups.hpp) into a kernel block.
 template <class Frame>
-void frame_of(double lon, double lat, Frame& out) {
-  const TangentFrame f = tangent_frame(lon, lat);
+void frame_of(const TangentFrame& f, Frame& out) {
   for (int i = 0; i < 3; ++i) {
     out.c[i] = f.c[i];
     out.e1[i] = f.east[i];
@@ -105,12 +100,12 @@ void frame_of(double lon, double lat, Frame& out) {
 }
 
 // A gnomonic square region of full angular width `width` (degrees).
-void region_of(const std::array<double, 2>& center, double width, detail::kernel_double::aw_region& out) {
-  frame_of(center[0], center[1], out);
+void region_of(const TangentFrame& center, double width, detail::kernel_double::aw_region& out) {
+  frame_of(center, out);
   out.half_width = std::tan(0.5 * width * kDeg);
 }
 
-void fill_initial(const Scene& scene, int initial, detail::RealParams& rp);
+void fill_initial(const Scene& scene, int initial, const TangentFrame& cap, detail::RealParams& rp);
 
 // The method's coefficients at the plan's step.
 void fill_method(const Plan& p, detail::RealParams& rp) {
@@ -131,21 +126,21 @@ void fill_schedule(const Plan& p, detail::IntParams& ip) {
   detail::fill_analysis_ints(p.scene, p, ip);
 }
 
-void fill_reals(const Scene& scene, const Plan& p, detail::RealParams& rp) {
+void fill_reals(const Scene& scene, const Plan& p, const detail::PlanLookups& found, detail::RealParams& rp) {
   rp.energy = scene.energy;
   rp.energy_limit = scene.max_energy_error.value_or(std::numeric_limits<double>::infinity());
   fill_method(p, rp);
-  fill_initial(scene, p.kernel.initial, rp);
-  if (scene.zoom) region_of(scene.zoom_center, scene.zoom_width, rp.zoom);
-  if (scene.confine) region_of(scene.confine_center, scene.confine_width, rp.confine);
+  fill_initial(scene, p.kernel.initial, found.cap, rp);
+  if (scene.zoom) region_of(found.zoom, scene.zoom_width, rp.zoom);
+  if (scene.confine) region_of(found.confine, scene.confine_width, rp.confine);
   detail::fill_indicator_reals(scene, p, rp);
   detail::fill_analysis_reals(scene, p, rp);
 }
 
 // The parameters of the initial kind.
-void fill_initial(const Scene& scene, int initial, detail::RealParams& rp) {
+void fill_initial(const Scene& scene, int initial, const TangentFrame& cap, detail::RealParams& rp) {
   if (initial == AW_INITIAL_CAP) {
-    frame_of(scene.cap_center[0], scene.cap_center[1], rp.cap);
+    frame_of(cap, rp.cap);
     rp.cap.cos_radius = std::cos(scene.cap_radius * kDeg);
   } else if (initial == AW_INITIAL_BOX) {
     rp.box.lon0 = scene.box_lon[0] / 360.0;
@@ -178,6 +173,8 @@ void fill_ints(const Scene& scene, const Plan& p, detail::IntParams& ip) {
 Plan make_plan(const Scene& scene_as_written, const PlanInputs& inputs) {
   Scene scene = detail::with_grid_size(scene_as_written);
   std::shared_ptr<const StateSet> states = detail::plan_states(scene, inputs);  // ensemble.initial = "file"
+  // the lower layers asked once, before anything is decided; nothing below asks them again
+  const detail::PlanLookups found = detail::look_up(scene);
   if (scene.step_auto)
     fail_at(scene, "integrator.step",
             "\"auto\" is resolved before planning, by a pilot ensemble on a device: resolve_step(scene, inputs, "
@@ -186,22 +183,23 @@ Plan make_plan(const Scene& scene_as_written, const PlanInputs& inputs) {
   p.scene = scene;
   p.states = std::move(states);
   auto params = std::make_shared<detail::KernelParams>();
-  const detail::ModelDescriptor& model = detail::model_of(scene);
+  const detail::ModelDescriptor& model = detail::model_found(scene, found.model);
   p.model = &model;
   detail::plan_model_values(scene, model, params->reals);
-  plan_method(scene, p);
+  plan_method(scene, found, p);
   if (scene.initial == "grid")
     detail::plan_grid(scene, model, params->reals, p);
   else if (scene.initial != "file")  // states from a file: each has its own energy (states.hpp)
-    detail::plan_accessible(scene, model, params->reals, p);
+    detail::plan_accessible(scene, model, params->reals, found, p);
+  p.sample_intervals = found.intervals;
   detail::plan_schedule(scene, p);
   detail::plan_analysis(scene, p);
-  plan_kernel(scene, model, p);
+  plan_kernel(scene, model, found.switch_bits, p);
   plan_histograms(scene, p);
-  fill_reals(scene, p, params->reals);
+  fill_reals(scene, p, found, params->reals);
   fill_ints(scene, p, params->ints);
   p.hist_size = detail::lay_out_picked(p.kernel.features, p.hist_size, params->ints);  // observe.trajectories
-  detail::plan_guard(scene, model, *params, p);  // may draw initial states: after the blocks are filled
+  detail::plan_guard(scene, model, found.bounds_momenta, *params, p);  // may draw initial states: after the blocks are filled
   // a run that asks for pictures where none can be drawn computes and writes the rest
   if (scene.images && !inputs.no_pictures.empty())
     p.warnings.push_back({"output.images", "output.images: no pictures will be drawn: " + inputs.no_pictures});
@@ -231,14 +229,15 @@ Plan with_trajectories(const Plan& plan, std::uint64_t trajectories) {
 
 double largest_frequency(const Scene& scene, std::string* basis) {
   detail::KernelParams kp;
-  const detail::ModelDescriptor& model = detail::model_of(scene);
+  const detail::PlanLookups found = detail::look_up(scene);
+  const detail::ModelDescriptor& model = detail::model_found(scene, found.model);
   detail::plan_model_values(scene, model, kp.reals);
   kp.reals.energy = scene.energy;
-  fill_initial(scene, initial_kind(scene), kp.reals);
+  fill_initial(scene, initial_kind(scene), found.cap, kp.reals);
   kp.ints.seed = static_cast<std::int64_t>(scene.seed);
   kp.ints.max_attempts = 1000;
   std::string b;
-  const double omega = detail::model_frequency(scene, model, kp, initial_kind(scene), nullptr, b);
+  const double omega = detail::model_frequency(scene, model, found.bounds_momenta, kp, initial_kind(scene), nullptr, b);
   if (basis) *basis = b;
   return omega;
 }

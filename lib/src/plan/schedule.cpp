@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "aw_params.h"
-#include "output_table/output_table.hpp"
 #include "plan/checks.hpp"
 
 namespace arnoldweb::detail {
@@ -56,21 +55,10 @@ void plan_slices(const Scene& scene, Plan& p) {
   p.slices = (segments + per_slice - 1) / per_slice;
 }
 
-// The sample intervals of the output table's table keys switched on (TableSubKey::interval),
-// where taken, in table order: each dotted sub-key and its value in T.
-std::vector<std::pair<std::string, double>> table_intervals(const Scene& scene) {
-  std::vector<std::pair<std::string, double>> all;
-  for (const KeyTable* t : key_tables())
-    if (t->on(scene.output_values))
-      for (const TableSubKey& k : t->keys)
-        if (k.interval && t->taken(scene.output_values, k))
-          all.emplace_back(t->sub(k.name), t->value(scene.output_values, k.name).at(0));
-  return all;
-}
-
 }  // namespace
 
 void plan_schedule(const Scene& scene, Plan& p) {
+  const std::vector<std::pair<std::string, double>>& intervals = p.sample_intervals;
   p.step = scene.step;
   check_counts(scene);
   const std::int64_t per_window = exact_ratio(scene.average, p.step);
@@ -88,7 +76,6 @@ void plan_schedule(const Scene& scene, Plan& p) {
   // frequencies', the actions'); every other is a whole number of segments.
   double unit = energy ? scene.energy_every : scene.average;
   std::string unit_key = energy ? "observe.energy_error.every" : "run.average";
-  const std::vector<std::pair<std::string, double>> intervals = table_intervals(scene);
   for (const auto& [key, every] : intervals)
     if (every < unit) unit = every, unit_key = key;
   p.segments_per_window = exact_ratio(scene.average, unit);

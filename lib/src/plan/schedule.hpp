@@ -6,7 +6,8 @@
 namespace arnoldweb::detail {
 
 // step, steps_per_segment, segments_per_window, windows, steps_per_trajectory,
-// trajectory_steps, force_evaluations (p.method must be set). Throws SceneError.
+// trajectory_steps, force_evaluations (p.method and p.sample_intervals must be
+// set). Throws SceneError.
 void plan_schedule(const Scene& scene, Plan& p);
 // frames and frame_bounds (after plan_schedule). Throws SceneError.
 void plan_frames(const Scene& scene, Plan& p);
