@@ -33,7 +33,7 @@ LAYERS = [
     (3, "scene", ["lib/src/scene/", "lib/include/arnoldweb/scene.hpp"]),
     (4, "plan", ["lib/src/plan/", "lib/include/arnoldweb/plan.hpp", "lib/include/arnoldweb/job.hpp",
                  "lib/include/arnoldweb/step_guard.hpp", "lib/include/arnoldweb/device_info.hpp",
-                 "lib/include/arnoldweb/states.hpp"]),
+                 "lib/include/arnoldweb/states.hpp", "lib/include/arnoldweb/accuracy_report.hpp"]),
     (5, "backends", ["lib/src/backends/", "lib/include/arnoldweb/device.hpp"]),
     (6, "run", ["lib/src/run/", "lib/include/arnoldweb/run.hpp", "lib/include/arnoldweb/result.hpp",
                 "lib/include/arnoldweb/checkpoint.hpp"]),
