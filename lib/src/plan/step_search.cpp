@@ -290,6 +290,135 @@ double MethodFit::predict_median(double step) const {
   return predict(merged(*this), &PilotPoint::median, order, step);
 }
 
+namespace {
+
+// What the phases of the search share: the options, the pilot, its sample
+// interval and ladder (h0 = every / n0, the guard's largest step), the target.
+struct Search {
+  const PilotOptions& o;
+  Pilot& pilot;
+  double target, every, largest, omega;
+  std::int64_t n0;
+  double ladder_step(int k) const { return every / static_cast<double>(n0 << k); }
+};
+
+// Every method (of o.methods) at h0 and h0/2, and h0/4 ... unless the pre-filter measures those later.
+void measure_ladders(const Search& s, AccuracyReport& rep) {
+  const int first = s.o.prefilter ? std::min(s.o.steps_per_method, 2) : s.o.steps_per_method;
+  for (const Method& m : methods()) {
+    if (!s.o.methods.empty() && std::find(s.o.methods.begin(), s.o.methods.end(), m.name) == s.o.methods.end())
+      continue;
+    MethodFit f;
+    f.method = m.name;
+    f.order = m.order;
+    f.stages = m.stages;
+    f.work = m.work();
+    f.top_order = m.eps_orders.empty() ? m.order : *std::max_element(m.eps_orders.begin(), m.eps_orders.end());
+    for (int k = 0; k < first; ++k) f.points.push_back(s.pilot.measure(m.name, s.ladder_step(k)));
+    describe(f);
+    rep.fits.push_back(f);
+  }
+}
+
+// The pre-filter: the rest of the ladder only for the methods that could still be the cheapest.
+void measure_past_prefilter(const Search& s, AccuracyReport& rep) {
+  if (!s.o.prefilter || s.o.steps_per_method <= 2) return;
+  double best = kInf;  // the cheapest conservative prediction after two steps
+  for (const MethodFit& f : rep.fits) {
+    const AccuracyChoice c = cheapest_step(f, s.target, s.every, s.largest, s.omega);
+    if (c.meets) best = std::min(best, c.forces_per_t);
+  }
+  for (MethodFit& f : rep.fits) {
+    f.optimistic_forces_per_t = optimistic_forces(f, s.target, s.largest);
+    if (f.optimistic_forces_per_t > best) {
+      f.prefiltered = true;
+      continue;
+    }
+    for (int k = 2; k < s.o.steps_per_method; ++k) f.points.push_back(s.pilot.measure(f.method, s.ladder_step(k)));
+    describe(f);
+  }
+}
+
+// The scene's own method and step on the pilot, its predictions, and the rate of its kernel.
+void measure_as_written(const Search& s, const Plan& wp, double unit, std::uint64_t preferred_chunk,
+                        AccuracyReport& rep) {
+  const Scene& scene = wp.scene;
+  AccuracyChoice& a = rep.as_written;
+  const Method& m = wp.method;
+  a.method = m.name;
+  a.stages = m.stages;
+  a.step = scene.step;
+  const PilotPoint p = s.pilot.measure(m.name, scene.step);
+  a.measured_max = p.max;
+  a.measured_median = p.median;
+  for (const MethodFit& f : rep.fits)
+    if (f.method == m.name) {
+      a.predicted_max = f.predict_max(scene.step);
+      a.predicted_median = f.predict_median(scene.step);
+    }
+  a.forces_per_t = m.work() / scene.step;
+  a.guard_value = step_guard_at(s.omega, scene.step, unit, unit).value;
+  a.meets = p.max <= s.target;
+  if (!a.meets) a.note = "pilot max " + fmt(p.max) + " > " + fmt(s.target);
+  rep.as_written_measured = true;
+  // given states: the rate on the pilot's own (it carries no more)
+  const std::uint64_t total = scene.trajectories;
+  const std::uint64_t most = scene.initial == "file" ? rep.pilot_trajectories : total;
+  const std::uint64_t nt = std::min<std::uint64_t>(most, std::max<std::uint64_t>(rep.pilot_trajectories, preferred_chunk));
+  rep.rate = s.pilot.rate(m.name, scene.step, nt, most);
+  rep.scene_seconds = rep.rate > 0 ? rep.scene_trajectory_steps / rep.rate : 0;
+}
+
+// The cheapest choice of every method; the cheapest of all run on the pilot until one is confirmed
+// (a miss joins its method's fit), at most kMaxVerifications times.
+void choose(const Search& s, AccuracyReport& rep) {
+  for (int attempt = 0;; ++attempt) {
+    rep.per_method.clear();
+    for (const MethodFit& f : rep.fits)
+      rep.per_method.push_back(cheapest_step(f, s.target, s.every, s.largest, s.omega));
+    const AccuracyChoice* best = nullptr;
+    for (const AccuracyChoice& c : rep.per_method)
+      if (c.meets && (!best || c.forces_per_t < best->forces_per_t)) best = &c;
+    if (!best) return;
+    if (!s.o.verify) {
+      rep.found = true;
+      rep.best = *best;
+      return;
+    }
+    if (attempt >= kMaxVerifications) {
+      rep.why_not = "the pilot did not confirm a prediction after " + std::to_string(kMaxVerifications) +
+                    " tries (last: " + best->method + " at h = " + fmt(best->step) + " T)";
+      return;
+    }
+    const PilotPoint p = s.pilot.measure(best->method, best->step);
+    MethodFit& f = *std::find_if(rep.fits.begin(), rep.fits.end(),
+                                 [&](const MethodFit& x) { return x.method == best->method; });
+    if (p.max <= s.target) {
+      rep.found = true;
+      rep.best = *best;
+      rep.best.measured_max = p.max;
+      rep.best.measured_median = p.median;
+      add_check(f, p);
+      return;
+    }
+    add_check(f, p);  // the fit learns from the miss; search again
+  }
+}
+
+// The measured values of the per-method rows that were run.
+void fill_measured(AccuracyReport& rep) {
+  for (AccuracyChoice& c : rep.per_method)
+    for (const MethodFit& f : rep.fits)
+      if (f.method == c.method && c.meets)
+        for (const PilotPoint& p : merged(f))
+          if (std::fabs(p.step - c.step) <= 1e-12 * c.step) {
+            c.measured_max = p.max;
+            c.measured_median = p.median;
+          }
+}
+
+}  // namespace
+
 namespace detail {
 
 AccuracyReport search_step(const Scene& scene, const PlanInputs& inputs, double tolerance, const PilotOptions& o,
@@ -342,102 +471,17 @@ AccuracyReport search_step(const Scene& scene, const PlanInputs& inputs, double 
 
   // ---- the methods: steps h0, h0/2, h0/4 below the guard's advice
   const double omega = wp.guard.omega;
-  const double h_adv = advised_step(omega);
-  const std::int64_t n0 = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(every / h_adv - 1e-9)));
-  const double largest = every / static_cast<double>(n0);
-  for (const Method& m : methods()) {
-    if (!o.methods.empty() && std::find(o.methods.begin(), o.methods.end(), m.name) == o.methods.end())
-      continue;
-    MethodFit f;
-    f.method = m.name;
-    f.order = m.order;
-    f.stages = m.stages;
-    f.work = m.work();
-    f.top_order = m.eps_orders.empty() ? m.order : *std::max_element(m.eps_orders.begin(), m.eps_orders.end());
-    const int first = o.prefilter ? std::min(o.steps_per_method, 2) : o.steps_per_method;
-    for (int k = 0; k < first; ++k)
-      f.points.push_back(pilot.measure(m.name, every / static_cast<double>(n0 << k)));
-    describe(f);
-    rep.fits.push_back(f);
-  }
-  if (o.prefilter && o.steps_per_method > 2) {
-    double best = kInf;  // the cheapest conservative prediction after two steps
-    for (const MethodFit& f : rep.fits) {
-      const AccuracyChoice c = cheapest_step(f, target, every, largest, omega);
-      if (c.meets) best = std::min(best, c.forces_per_t);
-    }
-    for (MethodFit& f : rep.fits) {
-      f.optimistic_forces_per_t = optimistic_forces(f, target, largest);
-      if (f.optimistic_forces_per_t > best) {
-        f.prefiltered = true;
-        continue;
-      }
-      for (int k = 2; k < o.steps_per_method; ++k)
-        f.points.push_back(pilot.measure(f.method, every / static_cast<double>(n0 << k)));
-      describe(f);
-    }
-  }
+  const std::int64_t n0 =
+      std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(every / advised_step(omega) - 1e-9)));
+  const Search s{o, pilot, target, every, every / static_cast<double>(n0), omega, n0};
+  measure_ladders(s, rep);
+  measure_past_prefilter(s, rep);
   if (rep.fits.empty())
     fail_at(scene, "integrator.method", "no method to consider (known: " + method_names() + ")");
-
-  // ---- the scene as written
-  if (concrete) {
-    AccuracyChoice& a = rep.as_written;
-    const Method& m = wp.method;  // the scene's
-    a.method = m.name;
-    a.stages = m.stages;
-    a.step = scene.step;
-    const PilotPoint p = pilot.measure(m.name, scene.step);
-    a.measured_max = p.max;
-    a.measured_median = p.median;
-    for (const MethodFit& f : rep.fits)
-      if (f.method == m.name) {
-        a.predicted_max = f.predict_max(scene.step);
-        a.predicted_median = f.predict_median(scene.step);
-      }
-    a.forces_per_t = m.work() / scene.step;
-    a.guard_value = step_guard_at(omega, scene.step, unit, unit).value;
-    a.meets = p.max <= target;
-    if (!a.meets) a.note = "pilot max " + fmt(p.max) + " > " + fmt(target);
-    rep.as_written_measured = true;
-    // given states: the rate on the pilot's own (it carries no more)
-    const std::uint64_t most = scene.initial == "file" ? n : total;
-    const std::uint64_t nt = std::min<std::uint64_t>(most, std::max<std::uint64_t>(n, preferred_chunk));
-    rep.rate = pilot.rate(m.name, scene.step, nt, most);
-    rep.scene_seconds = rep.rate > 0 ? rep.scene_trajectory_steps / rep.rate : 0;
-  }
+  if (concrete) measure_as_written(s, wp, unit, preferred_chunk, rep);
 
   // ---- the cheapest choice, checked on the pilot ensemble
-  for (int attempt = 0;; ++attempt) {
-    rep.per_method.clear();
-    for (const MethodFit& f : rep.fits) rep.per_method.push_back(cheapest_step(f, target, every, largest, omega));
-    const AccuracyChoice* best = nullptr;
-    for (const AccuracyChoice& c : rep.per_method)
-      if (c.meets && (!best || c.forces_per_t < best->forces_per_t)) best = &c;
-    if (!best) break;
-    if (!o.verify) {
-      rep.found = true;
-      rep.best = *best;
-      break;
-    }
-    if (attempt >= kMaxVerifications) {
-      rep.why_not = "the pilot did not confirm a prediction after " + std::to_string(kMaxVerifications) +
-                    " tries (last: " + best->method + " at h = " + fmt(best->step) + " T)";
-      break;
-    }
-    const PilotPoint p = pilot.measure(best->method, best->step);
-    MethodFit& f = *std::find_if(rep.fits.begin(), rep.fits.end(),
-                                 [&](const MethodFit& x) { return x.method == best->method; });
-    if (p.max <= target) {
-      rep.found = true;
-      rep.best = *best;
-      rep.best.measured_max = p.max;
-      rep.best.measured_median = p.median;
-      add_check(f, p);
-      break;
-    }
-    add_check(f, p);  // the fit learns from the miss; search again
-  }
+  choose(s, rep);
   if (!rep.found && rep.why_not.empty()) {
     double lowest = kInf;
     for (const MethodFit& f : rep.fits)
@@ -448,15 +492,7 @@ AccuracyReport search_step(const Scene& scene, const PlanInputs& inputs, double 
                   (scene.precision == Precision::Float ? ": use integrator.precision = \"double\"" : "") +
                   "); choose a larger integrator.tolerance";
   }
-  // measured values for the per-method rows that were run
-  for (AccuracyChoice& c : rep.per_method)
-    for (const MethodFit& f : rep.fits)
-      if (f.method == c.method && c.meets)
-        for (const PilotPoint& p : merged(f))
-          if (std::fabs(p.step - c.step) <= 1e-12 * c.step) {
-            c.measured_max = p.max;
-            c.measured_median = p.median;
-          }
+  fill_measured(rep);
   return rep;
 }
 
