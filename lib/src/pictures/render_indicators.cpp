@@ -8,7 +8,6 @@
 // puts the two views of one web side by side.
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstdio>
 
 #include "arnoldweb/output.hpp"
@@ -211,19 +210,18 @@ const PictureRegistration map_and_fli_row({"map_and_fli", "map_and_fli.png", tru
 
 void write_dataset_pictures(const Plan& plan, const Result& r, const std::string& dir, std::vector<std::string>& names) {
   if (plan.scene.initial != "grid") return;
-  // every dataset of the output table that names a picture, where the run wrote it
-  for (const RecordOutput* row : records_reported(plan.kernel.features)) {
-    const Records* rec = r.records_of(row->name);
-    if (!rec || rec->reals.empty()) continue;
+  // every dataset of the output table that names a picture, where the run wrote it, drawn as its
+  // file holds it (output_datasets: a log10 dataset as its logarithm; non-finite values are left blank)
+  const std::vector<OutputDataset> written = output_datasets(plan, r);
+  for (const RecordOutput* row : records_reported(plan.kernel.features))
     for (const RecordDataset& d : row->datasets) {
-      if (d.picture.empty() || d.integers || (d.feature && !(plan.kernel.features & d.feature))) continue;
-      std::vector<double> v = column(*rec, d.first);
-      if (d.log10)  // drawn as its file holds it: log10, zero and below left blank with the flagged
-        for (double& x : v) x = x > 0 ? std::log10(x) : std::numeric_limits<double>::quiet_NaN();
-      write_grid_picture(plan, r, dir + "/" + d.picture, v, d.picture_label);
+      if (d.picture.empty() || d.integers) continue;
+      const auto o = std::find_if(written.begin(), written.end(),
+                                  [&](const OutputDataset& w) { return w.output == row->name && w.name == d.name; });
+      if (o == written.end() || o->reals.empty()) continue;
+      write_grid_picture(plan, r, dir + "/" + d.picture, o->reals, d.picture_label);
       names.push_back(d.picture);
     }
-  }
 }
 
 }  // namespace arnoldweb::detail
