@@ -9,6 +9,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "arnoldweb/sphere.hpp"
 #include "aw_params.h"
 #include "plan/checks.hpp"
 #include "plan/effects.hpp"
@@ -228,16 +229,19 @@ Plan with_trajectories(const Plan& plan, std::uint64_t trajectories) {
 }
 
 double largest_frequency(const Scene& scene, std::string* basis) {
+  // only what the frequency needs (not make_plan's lookups: no fraction of the torus, no output table)
   detail::KernelParams kp;
-  const detail::PlanLookups found = detail::look_up(scene);
-  const detail::ModelDescriptor& model = detail::model_found(scene, found.model);
+  const detail::ModelDescriptor& model = detail::model_of(scene);
   detail::plan_model_values(scene, model, kp.reals);
   kp.reals.energy = scene.energy;
-  fill_initial(scene, initial_kind(scene), found.cap, kp.reals);
+  const int initial = initial_kind(scene);
+  const TangentFrame cap = initial == AW_INITIAL_CAP ? tangent_frame(scene.cap_center[0], scene.cap_center[1]) : TangentFrame{};
+  fill_initial(scene, initial, cap, kp.reals);
   kp.ints.seed = static_cast<std::int64_t>(scene.seed);
   kp.ints.max_attempts = 1000;
   std::string b;
-  const double omega = detail::model_frequency(scene, model, found.bounds_momenta, kp, initial_kind(scene), nullptr, b);
+  const double omega = detail::model_frequency(scene, model, detail::energy_bounds_momenta(model, kp.reals), kp,
+                                               initial, nullptr, b);
   if (basis) *basis = b;
   return omega;
 }
