@@ -237,7 +237,10 @@ TEST_SUITE("states") {
       CHECK(e.dataset() == c.dataset);
       CHECK(e.row() == -1);
       CHECK(contains(e.what(), c.says));
-      CHECK_FALSE(contains(e.what(), "0x"));  // no heap address (a status read past its end printed one)
+      // no heap address (a status read past its end printed one); the message after the file's name,
+      // since the test's temporary directory has a random name that may hold "0x" itself
+      const std::string message = what.rfind(path, 0) == 0 ? what.substr(path.size()) : what;
+      CHECK_FALSE(contains(message, "0x"));
     }
   }
 
